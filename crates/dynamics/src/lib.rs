@@ -1,0 +1,1 @@
+//! Rigid multibody kinematics and dynamics (thesis ch. 2, 7.2).

@@ -1,0 +1,1 @@
+//! Swept-sphere-volume distance library (thesis ch. 6).

@@ -1,0 +1,24 @@
+//! Sub-command implementations, one module per capability.
+
+pub mod dynamics;
+pub mod ssv;
+
+use clap::Subcommand;
+use std::process::ExitCode;
+
+/// Error type of the CLI: one line that says what is wrong and where.
+pub type CliResult = Result<ExitCode, Box<dyn std::error::Error>>;
+
+/// `biped bench ...` sub-commands.
+#[derive(Subcommand)]
+pub enum BenchCommand {
+    /// Median forward-dynamics time per algorithm (and per O(n) pass).
+    Dynamics(dynamics::BenchArgs),
+}
+
+/// Dispatch `biped bench ...`.
+pub fn run_bench(cmd: BenchCommand) -> CliResult {
+    match cmd {
+        BenchCommand::Dynamics(args) => dynamics::run_bench(args),
+    }
+}
