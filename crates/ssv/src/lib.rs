@@ -1,1 +1,15 @@
 //! Swept-sphere-volume distance library (thesis ch. 6).
+//!
+//! Three primitives ([`Pss`], [`Lss`], [`Tss`]), the six distance functions of Table 6.1
+//! with the swap relation for the other three, segments built from many SSVs with
+//! oriented-bounding-box pre-checks (6.6-6.7), and collision models of segment pairs.
+
+pub mod distance;
+pub mod error;
+pub mod primitives;
+pub mod result;
+
+pub use distance::distance;
+pub use error::SsvError;
+pub use primitives::{Lss, Pss, Ssv, Tss};
+pub use result::{DistanceResult, PrimitiveParam};

@@ -1,0 +1,215 @@
+//! The three swept-sphere-volume primitives PSS, LSS, TSS (thesis 6.3).
+//!
+//! Constructors validate their input (finite coordinates, radius >= 0), so the distance
+//! functions that take these types never see NaN or infinity and never fail.
+
+use crate::error::SsvError;
+use nalgebra::{Isometry3, Point3};
+
+fn check_point(p: &Point3<f64>, what: &str) -> Result<(), SsvError> {
+    for (axis, v) in ["x", "y", "z"].iter().zip(p.iter()) {
+        if !v.is_finite() {
+            return Err(SsvError::NonFinite {
+                what: format!("{what} {axis}"),
+                value: *v,
+            });
+        }
+    }
+    Ok(())
+}
+
+fn check_radius(r: f64) -> Result<(), SsvError> {
+    if !r.is_finite() {
+        return Err(SsvError::NonFinite {
+            what: "radius".into(),
+            value: r,
+        });
+    }
+    if r < 0.0 {
+        return Err(SsvError::NegativeRadius(r));
+    }
+    Ok(())
+}
+
+/// Point-swept-sphere volume: a sphere of radius `r` about centre `p` (6.3.1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pss {
+    center: Point3<f64>,
+    radius: f64,
+}
+
+/// Line-swept-sphere volume: a capsule about segment `v0 + s e`, s in [0,1] (6.3.2, 6.4).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Lss {
+    vertices: [Point3<f64>; 2],
+    radius: f64,
+}
+
+/// Triangle-swept-sphere volume: a rounded triangle `v0 + s0 e0 + s1 e1` (6.3.3, 6.5-6.6).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tss {
+    vertices: [Point3<f64>; 3],
+    radius: f64,
+}
+
+impl Pss {
+    /// A PSS; errors on non-finite input or negative radius.
+    pub fn new(center: Point3<f64>, radius: f64) -> Result<Self, SsvError> {
+        check_point(&center, "center")?;
+        check_radius(radius)?;
+        Ok(Self { center, radius })
+    }
+    /// Centre point p.
+    #[inline]
+    pub fn center(&self) -> &Point3<f64> {
+        &self.center
+    }
+    /// Sphere radius r.
+    #[inline]
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+    /// This PSS moved by a rigid transform.
+    #[inline]
+    pub fn transformed(&self, pose: &Isometry3<f64>) -> Self {
+        Self {
+            center: pose * self.center,
+            radius: self.radius,
+        }
+    }
+}
+
+impl Lss {
+    /// An LSS from its two vertices; errors on non-finite input or negative radius.
+    pub fn new(v0: Point3<f64>, v1: Point3<f64>, radius: f64) -> Result<Self, SsvError> {
+        check_point(&v0, "vertex 0")?;
+        check_point(&v1, "vertex 1")?;
+        check_radius(radius)?;
+        Ok(Self {
+            vertices: [v0, v1],
+            radius,
+        })
+    }
+    /// The vertices v0, v1.
+    #[inline]
+    pub fn vertices(&self) -> &[Point3<f64>; 2] {
+        &self.vertices
+    }
+    /// Sphere radius r.
+    #[inline]
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+    /// Point on the segment at parameter s, eq. (6.4).
+    #[inline]
+    pub fn point_at(&self, s: f64) -> Point3<f64> {
+        self.vertices[0] + (self.vertices[1] - self.vertices[0]) * s
+    }
+    /// This LSS moved by a rigid transform.
+    #[inline]
+    pub fn transformed(&self, pose: &Isometry3<f64>) -> Self {
+        Self {
+            vertices: [pose * self.vertices[0], pose * self.vertices[1]],
+            radius: self.radius,
+        }
+    }
+}
+
+impl Tss {
+    /// A TSS from its three vertices; errors on non-finite input or negative radius.
+    pub fn new(
+        v0: Point3<f64>,
+        v1: Point3<f64>,
+        v2: Point3<f64>,
+        radius: f64,
+    ) -> Result<Self, SsvError> {
+        check_point(&v0, "vertex 0")?;
+        check_point(&v1, "vertex 1")?;
+        check_point(&v2, "vertex 2")?;
+        check_radius(radius)?;
+        Ok(Self {
+            vertices: [v0, v1, v2],
+            radius,
+        })
+    }
+    /// The vertices v0, v1, v2.
+    #[inline]
+    pub fn vertices(&self) -> &[Point3<f64>; 3] {
+        &self.vertices
+    }
+    /// Sphere radius r.
+    #[inline]
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+    /// Point on the triangle at parameters (s0, s1), eq. (6.5).
+    #[inline]
+    pub fn point_at(&self, s0: f64, s1: f64) -> Point3<f64> {
+        let [v0, v1, v2] = self.vertices;
+        v0 + (v1 - v0) * s0 + (v2 - v0) * s1
+    }
+    /// This TSS moved by a rigid transform.
+    #[inline]
+    pub fn transformed(&self, pose: &Isometry3<f64>) -> Self {
+        Self {
+            vertices: self.vertices.map(|v| pose * v),
+            radius: self.radius,
+        }
+    }
+}
+
+/// Any of the three SSV primitives.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Ssv {
+    /// Point-swept sphere.
+    Point(Pss),
+    /// Line-swept sphere (capsule).
+    Line(Lss),
+    /// Triangle-swept sphere.
+    Triangle(Tss),
+}
+
+impl Ssv {
+    /// Sphere radius r of the primitive.
+    #[inline]
+    pub fn radius(&self) -> f64 {
+        match self {
+            Ssv::Point(p) => p.radius(),
+            Ssv::Line(l) => l.radius(),
+            Ssv::Triangle(t) => t.radius(),
+        }
+    }
+    /// The primitive's vertices (1, 2 or 3 of them).
+    pub fn vertices(&self) -> &[Point3<f64>] {
+        match self {
+            Ssv::Point(p) => std::slice::from_ref(&p.center),
+            Ssv::Line(l) => &l.vertices,
+            Ssv::Triangle(t) => &t.vertices,
+        }
+    }
+    /// This SSV moved by a rigid transform.
+    #[inline]
+    pub fn transformed(&self, pose: &Isometry3<f64>) -> Self {
+        match self {
+            Ssv::Point(p) => Ssv::Point(p.transformed(pose)),
+            Ssv::Line(l) => Ssv::Line(l.transformed(pose)),
+            Ssv::Triangle(t) => Ssv::Triangle(t.transformed(pose)),
+        }
+    }
+}
+
+impl From<Pss> for Ssv {
+    fn from(p: Pss) -> Self {
+        Ssv::Point(p)
+    }
+}
+impl From<Lss> for Ssv {
+    fn from(l: Lss) -> Self {
+        Ssv::Line(l)
+    }
+}
+impl From<Tss> for Ssv {
+    fn from(t: Tss) -> Self {
+        Ssv::Triangle(t)
+    }
+}
