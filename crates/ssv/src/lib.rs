@@ -6,8 +6,12 @@
 
 pub mod distance;
 pub mod error;
+pub mod format;
+pub mod model;
+pub mod obb;
 pub mod primitives;
 pub mod result;
+pub mod segment;
 
 pub use distance::distance;
 pub use error::SsvError;
