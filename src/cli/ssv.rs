@@ -1,23 +1,28 @@
-//! `biped ssv query|bench`.
+//! `biped ssv query|bench`: the SSV distance library on the command line.
+
+mod bench;
+mod query;
 
 use super::CliResult;
 use clap::Subcommand;
-use std::process::ExitCode;
 
 /// `biped ssv ...` sub-commands.
 #[derive(Subcommand)]
 pub enum SsvCommand {
-    /// Read JSON Lines queries from stdin, write one JSON result per line.
+    /// Read JSON Lines queries `{"a": S, "b": S}` from stdin, write one JSON result per line.
     Query,
-    /// Time the six distance functions (thesis Table 6.9).
+    /// Time the six distance functions on random inputs (thesis Table 6.9).
     Bench {
-        /// Print one JSON object instead of the table.
+        /// Print one JSON object `{"PP": ns, ...}` instead of the table.
         #[arg(long)]
         json: bool,
     },
 }
 
 /// Run an `ssv` sub-command.
-pub fn run(_cmd: SsvCommand) -> CliResult {
-    Ok(ExitCode::SUCCESS)
+pub fn run(cmd: SsvCommand) -> CliResult {
+    match cmd {
+        SsvCommand::Query => query::run(),
+        SsvCommand::Bench { json } => bench::run(json),
+    }
 }
