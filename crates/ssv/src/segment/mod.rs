@@ -1,0 +1,164 @@
+//! Robot segments as compounds of SSVs fixed in a body frame (thesis 6.6.1, 6.8).
+//!
+//! A [`Segment`] keeps its SSVs in the body frame (constant) and a world-frame copy that
+//! [`Segment::set_pose`] refreshes without allocating. Mirroring about the coordinate planes
+//! gives the opposite-side segment ([`Segment::mirrored`]) or symmetric copies of single SSVs
+//! ([`Segment::with_mirrored_copies`]); [`Segment::version`] builds a reduced version holding
+//! a subset of the SSVs (e.g. only the inner side of a thigh, 6.8).
+
+mod mirror;
+mod pair;
+mod sphere;
+
+pub use mirror::{MirrorPlane, UnknownPlane};
+pub use pair::{
+    closest_ssv_pair, closest_ssv_pair_brute_force, segment_pair_distance, ClosestPair,
+    PairDistance,
+};
+pub use sphere::BoundingSphere;
+
+use crate::obb::Obb;
+use crate::primitives::Ssv;
+use nalgebra::Isometry3;
+
+/// What can be wrong when building a segment.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum SegmentError {
+    /// A segment needs at least one SSV.
+    #[error("segment `{0}` has no SSVs")]
+    Empty(String),
+    /// An SSV index beyond the segment's SSV count.
+    #[error("segment `{segment}` has {count} SSVs, index {index} is out of range")]
+    IndexOutOfRange {
+        /// Segment name.
+        segment: String,
+        /// Offending index.
+        index: usize,
+        /// Number of SSVs in the segment.
+        count: usize,
+    },
+}
+
+/// A named compound of SSVs in a body frame with its tight OBB (SSV_Segment of Fig. 6.14).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Segment {
+    name: String,
+    ssvs: Vec<Ssv>,
+    spheres: Vec<BoundingSphere>,
+    obb: Obb,
+    world_ssvs: Vec<Ssv>,
+    world_spheres: Vec<BoundingSphere>,
+    world_obb: Obb,
+}
+
+impl Segment {
+    /// A segment from body-frame SSVs; fits its OBB once. Starts at the identity pose.
+    pub fn new(name: impl Into<String>, ssvs: Vec<Ssv>) -> Result<Self, SegmentError> {
+        let name = name.into();
+        if ssvs.is_empty() {
+            return Err(SegmentError::Empty(name));
+        }
+        let spheres: Vec<_> = ssvs.iter().map(BoundingSphere::of_ssv).collect();
+        let obb = Obb::fit(&ssvs);
+        Ok(Self {
+            name,
+            world_ssvs: ssvs.clone(),
+            world_spheres: spheres.clone(),
+            world_obb: obb,
+            ssvs,
+            spheres,
+            obb,
+        })
+    }
+
+    /// Segment name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+    /// The SSVs in the body frame.
+    pub fn ssvs(&self) -> &[Ssv] {
+        &self.ssvs
+    }
+    /// Number of SSVs.
+    pub fn len(&self) -> usize {
+        self.ssvs.len()
+    }
+    /// Always false: a segment has at least one SSV.
+    pub fn is_empty(&self) -> bool {
+        self.ssvs.is_empty()
+    }
+    /// Per-SSV bounding spheres in the body frame.
+    pub fn bounding_spheres(&self) -> &[BoundingSphere] {
+        &self.spheres
+    }
+    /// Tight OBB in the body frame (6.7).
+    pub fn obb(&self) -> &Obb {
+        &self.obb
+    }
+    /// The SSVs at the last pose set by [`Segment::set_pose`].
+    pub fn world_ssvs(&self) -> &[Ssv] {
+        &self.world_ssvs
+    }
+    /// Per-SSV bounding spheres at the last pose.
+    pub fn world_spheres(&self) -> &[BoundingSphere] {
+        &self.world_spheres
+    }
+    /// The OBB at the last pose.
+    pub fn world_obb(&self) -> &Obb {
+        &self.world_obb
+    }
+
+    /// Moves the segment to `pose` (body frame to world): transforms SSVs, spheres and OBB
+    /// in place, without allocating.
+    pub fn set_pose(&mut self, pose: &Isometry3<f64>) {
+        for (w, s) in self.world_ssvs.iter_mut().zip(&self.ssvs) {
+            *w = s.transformed(pose);
+        }
+        for (w, s) in self.world_spheres.iter_mut().zip(&self.spheres) {
+            *w = s.transformed(pose);
+        }
+        self.world_obb = self.obb.transformed(pose);
+    }
+
+    /// The whole segment mirrored about a body-frame plane: the opposite-side version (6.6.1).
+    pub fn mirrored(&self, name: impl Into<String>, plane: MirrorPlane) -> Self {
+        let ssvs = self.ssvs.iter().map(|s| plane.reflect_ssv(s)).collect();
+        Self::new(name, ssvs).unwrap_or_else(|_| self.clone())
+    }
+
+    /// This segment plus mirror images of the SSVs at `indices` (symmetry inside a segment).
+    pub fn with_mirrored_copies(
+        &self,
+        indices: &[usize],
+        plane: MirrorPlane,
+    ) -> Result<Self, SegmentError> {
+        let mut ssvs = self.ssvs.clone();
+        for &i in indices {
+            ssvs.push(plane.reflect_ssv(self.get(i)?));
+        }
+        Self::new(self.name.clone(), ssvs)
+    }
+
+    /// A reduced version holding only the SSVs at `indices`, with its own tight OBB (6.8).
+    pub fn version(
+        &self,
+        name: impl Into<String>,
+        indices: &[usize],
+    ) -> Result<Self, SegmentError> {
+        let ssvs = indices
+            .iter()
+            .map(|&i| self.get(i).copied())
+            .collect::<Result<Vec<_>, _>>()?;
+        Self::new(name, ssvs)
+    }
+
+    fn get(&self, index: usize) -> Result<&Ssv, SegmentError> {
+        self.ssvs
+            .get(index)
+            .ok_or_else(|| SegmentError::IndexOutOfRange {
+                segment: self.name.clone(),
+                index,
+                count: self.ssvs.len(),
+            })
+    }
+}
