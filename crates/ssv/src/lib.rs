@@ -17,3 +17,7 @@ pub use distance::distance;
 pub use error::SsvError;
 pub use primitives::{Lss, Pss, Ssv, Tss};
 pub use result::{DistanceResult, PrimitiveParam};
+pub use format::{FormatError, LoadedModel};
+pub use model::{CollisionModel, ModelError, SegmentPair};
+pub use obb::Obb;
+pub use segment::{ClosestPair, MirrorPlane, PairDistance, Segment};

@@ -9,6 +9,7 @@ mod fit;
 mod overlap;
 
 use crate::primitives::Ssv;
+use crate::segment::MirrorPlane;
 use nalgebra::{Isometry3, Matrix3, Point3, Vector3};
 
 /// An oriented box: centre, orthonormal right-handed axes (columns) and half extents.
@@ -51,6 +52,19 @@ impl Obb {
         Self {
             center: pose * self.center,
             axes: rot.matrix() * self.axes,
+            half_extents: self.half_extents,
+        }
+    }
+
+    /// The mirror image of the box about a coordinate plane (axes kept right-handed).
+    pub fn reflected(&self, plane: MirrorPlane) -> Self {
+        let k = plane.normal_axis();
+        let mut axes = self.axes;
+        axes.row_mut(k).neg_mut();
+        axes.column_mut(0).neg_mut();
+        Self {
+            center: plane.reflect(&self.center),
+            axes,
             half_extents: self.half_extents,
         }
     }

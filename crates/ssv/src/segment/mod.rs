@@ -58,9 +58,14 @@ impl Segment {
         if ssvs.is_empty() {
             return Err(SegmentError::Empty(name));
         }
-        let spheres: Vec<_> = ssvs.iter().map(BoundingSphere::of_ssv).collect();
         let obb = Obb::fit(&ssvs);
-        Ok(Self {
+        Ok(Self::with_obb(name, ssvs, obb))
+    }
+
+    /// A segment with a given body-frame OBB (which must contain every SSV).
+    fn with_obb(name: String, ssvs: Vec<Ssv>, obb: Obb) -> Self {
+        let spheres: Vec<_> = ssvs.iter().map(BoundingSphere::of_ssv).collect();
+        Self {
             name,
             world_ssvs: ssvs.clone(),
             world_spheres: spheres.clone(),
@@ -68,7 +73,7 @@ impl Segment {
             ssvs,
             spheres,
             obb,
-        })
+        }
     }
 
     /// Segment name.
@@ -121,9 +126,10 @@ impl Segment {
     }
 
     /// The whole segment mirrored about a body-frame plane: the opposite-side version (6.6.1).
+    /// Its OBB is the mirror image of this one (equally tight).
     pub fn mirrored(&self, name: impl Into<String>, plane: MirrorPlane) -> Self {
         let ssvs = self.ssvs.iter().map(|s| plane.reflect_ssv(s)).collect();
-        Self::new(name, ssvs).unwrap_or_else(|_| self.clone())
+        Self::with_obb(name.into(), ssvs, self.obb.reflected(plane))
     }
 
     /// This segment plus mirror images of the SSVs at `indices` (symmetry inside a segment).
