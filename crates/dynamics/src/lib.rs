@@ -1,4 +1,26 @@
 //! Rigid multibody kinematics and dynamics (thesis ch. 2, 7.2).
+//!
+//! Model/data split: an immutable [`Model`] built with the validating [`ModelBuilder`], and a
+//! preallocated [`Data`] workspace. Spatial conventions are documented in [`spatial`].
+//! Forward dynamics by the O(n) three-pass algorithm ([`dynamics::on`], Algorithms 2.1-2.4),
+//! CRBA + dense Cholesky, or CRBA + reverse sparse `L^T L`; inverse dynamics by RNEA.
+
+mod check;
+pub mod configuration;
+pub mod data;
+pub mod dynamics;
+pub mod error;
+pub mod kinematics;
+pub mod model;
+pub mod spatial;
 
 pub mod dill;
 pub mod urdf;
+
+pub use configuration::{difference, integrate};
+pub use data::Data;
+pub use dynamics::{forward_dynamics, inverse_dynamics, mass_matrix, on, Algorithm};
+pub use error::{DynamicsError, ModelError};
+pub use kinematics::{forward_kinematics, update_placements};
+pub use model::{Body, BodyId, BodySpec, JointInfo, JointModel, Model, ModelBuilder};
+pub use spatial::{Force, Motion, RigidInertia, SpatialTransform, Wrench};

@@ -1,0 +1,122 @@
+//! Preallocated per-call workspace (model/data split): every recursion writes here.
+
+use crate::model::joint::{quaternion_jacobian, Joint};
+use crate::spatial::{ArticulatedInertia, Force, Motion, SpatialTransform};
+use crate::Model;
+use nalgebra::{
+    DMatrix, DVector, Isometry3, Matrix3, Matrix6, Rotation3, Translation3, UnitQuaternion,
+    Vector3, Vector6,
+};
+
+/// Mutable workspace for one model; all vectors are sized once in [`Data::new`].
+///
+/// Kinematic results are public: after any kinematics or dynamics call, `x[i]` is `C_i` (2.36),
+/// `world_rot[i]` / `world_pos[i]` the pose of body `i` in the world, `vel[i]` its velocity
+/// `[omega; rdot_O]` and `acc[i]` its conventional acceleration, both in body coordinates.
+#[derive(Clone, Debug)]
+pub struct Data {
+    pub(crate) nq: usize,
+    pub(crate) nv: usize,
+    /// Spatial transforms `C_i = C_kp` from parent to body (2.36).
+    pub x: Vec<SpatialTransform>,
+    /// Rotation `A_Ik` of each body frame in the world (columns = body axes in world coordinates).
+    pub world_rot: Vec<Matrix3<f64>>,
+    /// Origin of each body frame in world coordinates.
+    pub world_pos: Vec<Vector3<f64>>,
+    /// Body velocities `v_i = [omega; rdot_O]` in body coordinates (2.33).
+    pub vel: Vec<Motion>,
+    /// Body accelerations `a_i = [omegadot; rddot_O]` in body coordinates (2.34); after forward
+    /// dynamics they are the true accelerations (gravity enters as a force, not here).
+    pub acc: Vec<Motion>,
+    /// Velocity-dependent accelerations `b_i` of (2.34)/(2.37), body coordinates.
+    pub bias_acc: Vec<Motion>,
+    /// Gravity in each body's coordinates `g_i`.
+    pub gravity_body: Vec<Vector3<f64>>,
+    /// Relative Jacobians `J_i` of 6-DoF joints (child coordinates, rows `[ang; lin]`).
+    pub jacobian6: Vec<Matrix6<f64>>,
+    /// Body forces `f_i = f_ext + f_g - h_i` of (2.56), body coordinates.
+    pub(crate) force: Vec<Force>,
+    /// Projected mass matrices `M-bar_i` (2.69).
+    pub(crate) mbar: Vec<ArticulatedInertia>,
+    /// Projected forces `f-bar_i` (2.70).
+    pub(crate) fbar: Vec<Force>,
+    /// `U_i = M-bar_i J_i` of one-DoF joints.
+    pub(crate) u: Vec<Force>,
+    /// `(J_i^T M-bar_i J_i)^-1` of one-DoF joints.
+    pub(crate) dinv: Vec<f64>,
+    /// Forward propagation quantity `p_i` (2.68) of one-DoF joints.
+    pub(crate) p1: Vec<f64>,
+    /// `D^-1 U^T` of 6-DoF joints, so that `P_i = -pi6 C_i` (2.67).
+    pub(crate) pi6: Vec<Matrix6<f64>>,
+    /// Forward propagation quantity `p_i` (2.68) of 6-DoF joints.
+    pub(crate) p6: Vec<Vector6<f64>>,
+    /// Net body forces of the RNEA backward pass.
+    pub(crate) fnet: Vec<Force>,
+    /// Composite rigid-body inertias of CRBA.
+    pub(crate) ic: Vec<ArticulatedInertia>,
+    /// Generalized accelerations (output of forward dynamics).
+    pub ddq: DVector<f64>,
+    /// Generalized forces (output of inverse dynamics).
+    pub tau: DVector<f64>,
+    /// Joint-space mass matrix (output of [`crate::mass_matrix`]).
+    pub mass: DMatrix<f64>,
+    /// Velocity/gravity/external-force bias `RNEA(q, v, 0)` used by the O(n^3) methods.
+    pub nle: DVector<f64>,
+    /// Factorisation workspace (dense Cholesky or sparse LTL).
+    pub(crate) factor: DMatrix<f64>,
+}
+
+impl Data {
+    /// Workspace sized for `model`.
+    pub fn new(model: &Model) -> Self {
+        let n = model.nbodies();
+        let nv = model.nv();
+        let mut jacobian6 = vec![Matrix6::zeros(); n];
+        for (i, b) in model.bodies.iter().enumerate() {
+            if matches!(b.joint, Joint::Quaternion) {
+                jacobian6[i] = quaternion_jacobian();
+            }
+        }
+        Self {
+            nq: model.nq(),
+            nv,
+            x: vec![SpatialTransform::identity(); n],
+            world_rot: vec![Matrix3::identity(); n],
+            world_pos: vec![Vector3::zeros(); n],
+            vel: vec![Motion::zero(); n],
+            acc: vec![Motion::zero(); n],
+            bias_acc: vec![Motion::zero(); n],
+            gravity_body: vec![Vector3::zeros(); n],
+            jacobian6,
+            force: vec![Force::zero(); n],
+            mbar: vec![ArticulatedInertia::zero(); n],
+            fbar: vec![Force::zero(); n],
+            u: vec![Force::zero(); n],
+            dinv: vec![0.0; n],
+            p1: vec![0.0; n],
+            pi6: vec![Matrix6::zeros(); n],
+            p6: vec![Vector6::zeros(); n],
+            fnet: vec![Force::zero(); n],
+            ic: vec![ArticulatedInertia::zero(); n],
+            ddq: DVector::zeros(nv),
+            tau: DVector::zeros(nv),
+            mass: DMatrix::zeros(nv, nv),
+            nle: DVector::zeros(nv),
+            factor: DMatrix::zeros(nv, nv),
+        }
+    }
+
+    /// Number of bodies this workspace was sized for.
+    pub fn nbodies(&self) -> usize {
+        self.x.len()
+    }
+
+    /// World pose of body `i` (valid after a kinematics or dynamics call).
+    pub fn body_pose(&self, i: usize) -> Isometry3<f64> {
+        let r = Rotation3::from_matrix_unchecked(self.world_rot[i]);
+        Isometry3::from_parts(
+            Translation3::from(self.world_pos[i]),
+            UnitQuaternion::from_rotation_matrix(&r),
+        )
+    }
+}

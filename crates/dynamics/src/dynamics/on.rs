@@ -1,0 +1,168 @@
+//! The O(n) forward-dynamics algorithm of section 2.7-2.8, tree case (Algorithms 2.1-2.4).
+//!
+//! Propagation quantities in the thesis' notation, per body `i` with joint Jacobian `J_i`:
+//! - backward (2.67)-(2.72): `M-bar_i = M_i + sum_j C_j^T K_j`, `f-bar_i = f_i - sum_j C_j^T k_j`,
+//!   `P_i = -(J^T M-bar J)^-1 J^T M-bar C_i`, `p_i = (J^T M-bar J)^-1 (Q_i - J^T (M-bar b_i - f-bar_i))`,
+//!   `K_i = M-bar_i (C_i + J_i P_i)`, `k_i = M-bar_i (J_i p_i + b_i) - f-bar_i`;
+//! - second forward (2.66), (2.34): `qddot_i = P_i a_p(i) + p_i`, `a_i = C_i a_p(i) + J_i qddot_i + b_i`.
+//!
+//! Zero pruning: for one-DoF joints `U = M-bar J` is a 6-vector and `D = J^T U` a scalar, so
+//! `P_i a = -D^-1 U^T (C_i a)` and `C_i^T K_i = C_i^T (M-bar - U D^-1 U^T) C_i` are evaluated
+//! without forming `P_i` or `K_i`. Bodies are dispatched by joint type with one `match` per body;
+//! a sub-system body type (2.6) slots in as another arm of the same three passes.
+
+use crate::check;
+use crate::kinematics::{first_forward, six};
+use crate::model::joint::Joint;
+use crate::spatial::{ArticulatedInertia, Force, Motion, Wrench};
+use crate::{Data, DynamicsError, Model};
+use nalgebra::{DVector, Matrix6};
+
+/// First forward recursion (Algorithm 2.2 with step 2 of Algorithm 2.1): kinematics, body
+/// forces `f_i` (gravity, external wrenches, inertial forces) and `M-bar_i = M_i`, `f-bar_i = f_i`.
+pub fn forward_pass_1(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    fext: Option<&[Wrench]>,
+) -> Result<(), DynamicsError> {
+    check::data(model, data)?;
+    check::configuration(model, q)?;
+    check::vector("v", v, model.nv())?;
+    check::wrenches(model, fext)?;
+    if model.has_rotors() {
+        return Err(DynamicsError::Unsupported(
+            "the tree-case O(n) algorithm cannot handle geared rotors (shared coordinates need a sub-system); use Crba or Sparse",
+        ));
+    }
+    first_forward(model, data, q, v, fext);
+    for (i, body) in model.bodies.iter().enumerate() {
+        data.mbar[i] = body.inertia.to_articulated();
+        data.fbar[i] = data.force[i];
+    }
+    Ok(())
+}
+
+/// Backward recursion (Algorithm 2.3): `P_i, p_i, K_i, k_i` from the leaves to the root, with
+/// generalized forces `tau` (`Q_i`).
+pub fn backward_pass(
+    model: &Model,
+    data: &mut Data,
+    tau: &DVector<f64>,
+) -> Result<(), DynamicsError> {
+    check::data(model, data)?;
+    check::vector("tau", tau, model.nv())?;
+    for i in (0..model.nbodies()).rev() {
+        let body = &model.bodies[i];
+        let (ia, k) = match &body.joint {
+            Joint::Revolute(ax) | Joint::Prismatic(ax) => {
+                let mbar = &data.mbar[i];
+                let u = ax.apply_inertia(mbar);
+                let d = ax.dot_force(&u);
+                if !(d > 0.0) || !d.is_finite() {
+                    return Err(DynamicsError::NotPositiveDefinite {
+                        index: body.v_index,
+                        pivot: d,
+                    });
+                }
+                let dinv = 1.0 / d;
+                let b = &data.bias_acc[i];
+                let p = dinv * (tau[body.v_index] - u.dot(b) + ax.dot_force(&data.fbar[i]));
+                let k = mbar.apply(b) + u * p - data.fbar[i];
+                let mut ia = *mbar;
+                ia.sub_outer(&u, dinv);
+                data.u[i] = u;
+                data.dinv[i] = dinv;
+                data.p1[i] = p;
+                (ia, k)
+            }
+            Joint::Fixed => {
+                let mbar = &data.mbar[i];
+                (*mbar, mbar.apply(&data.bias_acc[i]) - data.fbar[i])
+            }
+            Joint::EulerZxz | Joint::Quaternion => six_dof_backward(data, i, body.v_index, tau)?,
+            Joint::Rotor(_) => {
+                return Err(DynamicsError::Unsupported(
+                    "the tree-case O(n) algorithm cannot handle geared rotors",
+                ))
+            }
+        };
+        if let Some(p) = body.parent {
+            let x = data.x[i];
+            data.mbar[p] += ia.tr_transform(&x);
+            data.fbar[p] -= x.tr_apply_force(&k);
+        }
+    }
+    Ok(())
+}
+
+/// Backward step of a 6-DoF joint: returns `M-bar - U D^-1 U^T` and `k_i`.
+fn six_dof_backward(
+    data: &mut Data,
+    i: usize,
+    vi: usize,
+    tau: &DVector<f64>,
+) -> Result<(ArticulatedInertia, Force), DynamicsError> {
+    let mbar = data.mbar[i].to_matrix();
+    let j = data.jacobian6[i];
+    let u = mbar * j;
+    let d = j.tr_mul(&u);
+    let chol = d.cholesky().ok_or(DynamicsError::NotPositiveDefinite {
+        index: vi,
+        pivot: d.determinant(),
+    })?;
+    let pi = chol.solve(&u.transpose());
+    let b = data.bias_acc[i].to_vector();
+    let fbar = data.fbar[i].to_vector();
+    let rhs = six(tau, vi) - j.tr_mul(&(mbar * b - fbar));
+    let p = chol.solve(&rhs);
+    let k = mbar * (b + j * p) - fbar;
+    let ia: Matrix6<f64> = mbar - u * pi;
+    data.pi6[i] = pi;
+    data.p6[i] = p;
+    Ok((
+        ArticulatedInertia::from_matrix(&((ia + ia.transpose()) * 0.5)),
+        Force::from_vector(&k),
+    ))
+}
+
+/// Second forward recursion (Algorithm 2.4): `qddot` into `data.ddq` and body accelerations.
+pub fn forward_pass_2<'d>(model: &Model, data: &'d mut Data) -> &'d DVector<f64> {
+    for (i, body) in model.bodies.iter().enumerate() {
+        let ap = match body.parent {
+            Some(p) => data.x[i].apply_motion(&data.acc[p]),
+            None => Motion::zero(),
+        };
+        let vi = body.v_index;
+        let a = match &body.joint {
+            Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => {
+                let qdd = data.p1[i] - data.dinv[i] * data.u[i].dot(&ap);
+                data.ddq[vi] = qdd;
+                ap + ax.motion(qdd)
+            }
+            Joint::Fixed => ap,
+            Joint::EulerZxz | Joint::Quaternion => {
+                let qdd = data.p6[i] - data.pi6[i] * ap.to_vector();
+                data.ddq.rows_mut(vi, 6).copy_from(&qdd);
+                ap + Motion::from_vector(&(data.jacobian6[i] * qdd))
+            }
+        };
+        data.acc[i] = a + data.bias_acc[i];
+    }
+    &data.ddq
+}
+
+/// The three passes in sequence (Algorithm 2.1).
+pub(crate) fn forward_dynamics<'d>(
+    model: &Model,
+    data: &'d mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    tau: &DVector<f64>,
+    fext: Option<&[Wrench]>,
+) -> Result<&'d DVector<f64>, DynamicsError> {
+    forward_pass_1(model, data, q, v, fext)?;
+    backward_pass(model, data, tau)?;
+    Ok(forward_pass_2(model, data))
+}

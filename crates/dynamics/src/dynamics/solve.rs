@@ -1,0 +1,101 @@
+//! In-place factorisations of the mass matrix: dense Cholesky `M = L L^T` (O(n^3)) and
+//! Featherstone's reverse sparse `M = L^T L` on the DoF parent array `lambda` (thesis 2.10.1).
+
+use crate::DynamicsError;
+use nalgebra::{DMatrix, DVector};
+
+/// Dense Cholesky `M = L L^T` in place (lower triangle of `m` becomes `L`).
+pub(crate) fn cholesky_in_place(m: &mut DMatrix<f64>) -> Result<(), DynamicsError> {
+    let n = m.nrows();
+    for j in 0..n {
+        let mut d = m[(j, j)];
+        for k in 0..j {
+            d -= m[(j, k)] * m[(j, k)];
+        }
+        if !(d > 0.0) || !d.is_finite() {
+            return Err(DynamicsError::NotPositiveDefinite { index: j, pivot: d });
+        }
+        let l = d.sqrt();
+        m[(j, j)] = l;
+        for i in (j + 1)..n {
+            let mut s = m[(i, j)];
+            for k in 0..j {
+                s -= m[(i, k)] * m[(j, k)];
+            }
+            m[(i, j)] = s / l;
+        }
+    }
+    Ok(())
+}
+
+/// Solves `L L^T x = b` in place with the factor of [`cholesky_in_place`].
+pub(crate) fn cholesky_solve_in_place(l: &DMatrix<f64>, b: &mut DVector<f64>) {
+    let n = l.nrows();
+    for i in 0..n {
+        let mut s = b[i];
+        for k in 0..i {
+            s -= l[(i, k)] * b[k];
+        }
+        b[i] = s / l[(i, i)];
+    }
+    for i in (0..n).rev() {
+        let mut s = b[i];
+        for k in (i + 1)..n {
+            s -= l[(k, i)] * b[k];
+        }
+        b[i] = s / l[(i, i)];
+    }
+}
+
+/// Reverse sparse factorisation `M = L^T L` in place (lower triangle), touching only the
+/// entries `(k, j)` with `j` an ancestor of `k` in `lambda`; fill-in free for tree patterns.
+pub(crate) fn ltl_in_place(
+    m: &mut DMatrix<f64>,
+    lambda: &[Option<usize>],
+) -> Result<(), DynamicsError> {
+    for k in (0..m.nrows()).rev() {
+        let d = m[(k, k)];
+        if !(d > 0.0) || !d.is_finite() {
+            return Err(DynamicsError::NotPositiveDefinite { index: k, pivot: d });
+        }
+        let a = d.sqrt();
+        m[(k, k)] = a;
+        let mut i = lambda[k];
+        while let Some(ii) = i {
+            m[(k, ii)] /= a;
+            i = lambda[ii];
+        }
+        let mut i = lambda[k];
+        while let Some(ii) = i {
+            let lki = m[(k, ii)];
+            let mut j = Some(ii);
+            while let Some(jj) = j {
+                m[(ii, jj)] -= lki * m[(k, jj)];
+                j = lambda[jj];
+            }
+            i = lambda[ii];
+        }
+    }
+    Ok(())
+}
+
+/// Solves `L^T L x = b` in place with the factor of [`ltl_in_place`].
+pub(crate) fn ltl_solve_in_place(l: &DMatrix<f64>, lambda: &[Option<usize>], b: &mut DVector<f64>) {
+    let n = l.nrows();
+    for i in (0..n).rev() {
+        b[i] /= l[(i, i)];
+        let mut j = lambda[i];
+        while let Some(jj) = j {
+            b[jj] -= l[(i, jj)] * b[i];
+            j = lambda[jj];
+        }
+    }
+    for i in 0..n {
+        let mut j = lambda[i];
+        while let Some(jj) = j {
+            b[i] -= l[(i, jj)] * b[jj];
+            j = lambda[jj];
+        }
+        b[i] /= l[(i, i)];
+    }
+}

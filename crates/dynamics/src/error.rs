@@ -1,0 +1,138 @@
+//! Typed errors of model construction and of the dynamics algorithms.
+
+use thiserror::Error;
+
+/// Invalid model input, reported by [`crate::RigidInertia::new`] and [`crate::ModelBuilder`].
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ModelError {
+    /// A body's parent index does not exist yet (parents must be added before children).
+    #[error("body `{body}`: parent index {parent} does not exist yet ({nbodies} bodies added; parents must precede children)")]
+    UnknownParent {
+        /// Name of the offending body.
+        body: String,
+        /// Requested parent index.
+        parent: usize,
+        /// Number of bodies added so far.
+        nbodies: usize,
+    },
+    /// A body names itself as its parent (a cycle).
+    #[error("body `{body}` would be its own parent (cycle)")]
+    CyclicParent {
+        /// Name of the offending body.
+        body: String,
+    },
+    /// Two bodies share a name.
+    #[error("duplicate body name `{0}`")]
+    DuplicateBodyName(String),
+    /// Two joints share a name.
+    #[error("duplicate joint name `{0}`")]
+    DuplicateJointName(String),
+    /// A joint placement contains NaN or infinity.
+    #[error("body `{body}`: non-finite joint placement")]
+    NonFinitePlacement {
+        /// Name of the offending body.
+        body: String,
+    },
+    /// Mass, CoM or inertia contains NaN or infinity.
+    #[error("non-finite mass, centre of mass or inertia")]
+    NonFiniteInertia,
+    /// Negative mass.
+    #[error("negative mass {mass}")]
+    NegativeMass {
+        /// The mass given.
+        mass: f64,
+    },
+    /// The rotational inertia matrix is not symmetric.
+    #[error("inertia matrix not symmetric (max asymmetry {asymmetry})")]
+    InertiaNotSymmetric {
+        /// Largest absolute difference `|I - I^T|`.
+        asymmetry: f64,
+    },
+    /// The rotational inertia has a negative principal moment (not positive semi-definite).
+    #[error("inertia matrix not positive (semi-)definite: principal moment {min_moment}")]
+    InertiaNotPositive {
+        /// Smallest principal moment.
+        min_moment: f64,
+    },
+    /// The principal moments violate `I1 + I2 >= I3`.
+    #[error("principal moments {moments:?} violate the triangle inequality")]
+    TriangleInequality {
+        /// Principal moments, ascending.
+        moments: [f64; 3],
+    },
+    /// A joint axis is zero or not finite.
+    #[error("body `{body}`: zero or non-finite joint axis")]
+    ZeroAxis {
+        /// Name of the offending body.
+        body: String,
+    },
+    /// A geared rotor's gear ratio is zero or not finite.
+    #[error("body `{body}`: invalid gear ratio {ratio}")]
+    InvalidGearRatio {
+        /// Name of the offending body.
+        body: String,
+        /// The ratio given.
+        ratio: f64,
+    },
+    /// A geared rotor's driver is not an existing one-DoF body compatible with the tree.
+    #[error("rotor `{body}`: bad driver body {driver}: {reason}")]
+    BadDriver {
+        /// Name of the rotor body.
+        body: String,
+        /// Driver index given.
+        driver: usize,
+        /// Why it was rejected.
+        reason: &'static str,
+    },
+    /// Bodies cannot be attached to a geared rotor (rotors are leaves).
+    #[error("body `{body}`: parent `{rotor}` is a geared rotor; rotors must be leaves")]
+    ChildOfRotor {
+        /// Name of the offending body.
+        body: String,
+        /// Name of the rotor.
+        rotor: String,
+    },
+    /// Gravity contains NaN or infinity.
+    #[error("non-finite gravity vector")]
+    NonFiniteGravity,
+}
+
+/// Invalid input to, or failure of, a kinematics/dynamics computation.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum DynamicsError {
+    /// An argument has the wrong length.
+    #[error("argument `{argument}` has length {got}, expected {expected}")]
+    DimensionMismatch {
+        /// Which argument.
+        argument: &'static str,
+        /// Expected length.
+        expected: usize,
+        /// Actual length.
+        got: usize,
+    },
+    /// An argument contains NaN or infinity.
+    #[error("argument `{argument}` has a non-finite entry at index {index}")]
+    NonFinite {
+        /// Which argument.
+        argument: &'static str,
+        /// Index of the first offending entry.
+        index: usize,
+    },
+    /// A free-joint quaternion in `q` is (numerically) zero.
+    #[error("quaternion at q[{q_index}..] has zero norm")]
+    ZeroQuaternion {
+        /// Index of the quaternion's first component in `q`.
+        q_index: usize,
+    },
+    /// A (projected) mass matrix is not positive definite, e.g. at a singular Euler angle.
+    #[error("mass matrix not positive definite (pivot {pivot} at coordinate {index})")]
+    NotPositiveDefinite {
+        /// Velocity coordinate (or body, for 6-DoF joints) where factorisation failed.
+        index: usize,
+        /// Offending pivot.
+        pivot: f64,
+    },
+    /// The algorithm does not support a feature of the model.
+    #[error("algorithm not supported for this model: {0}")]
+    Unsupported(&'static str),
+}

@@ -1,0 +1,231 @@
+//! Recursive kinematics (2.33)-(2.37): the first forward recursion (Algorithm 2.2) shared by
+//! every algorithm of the crate, and the public forward-kinematics entry points.
+
+use crate::check;
+use crate::model::joint::{
+    euler_zxz_jacobian, euler_zxz_jr_dot_qd, euler_zxz_rotation, quaternion_rotation,
+    six_dof_motion, Joint,
+};
+use crate::spatial::{Force, Motion, SpatialTransform, Wrench};
+use crate::{Data, DynamicsError, Model};
+use nalgebra::{DVector, Matrix3, Vector3, Vector6};
+
+/// Positions, velocities and accelerations of all bodies for `(q, v, a)` (2.33)-(2.37).
+///
+/// Fills `x`, `world_rot`, `world_pos`, `vel`, `bias_acc` and `acc` of `data`; `acc` is the
+/// kinematic acceleration (no gravity).
+pub fn forward_kinematics(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    a: &DVector<f64>,
+) -> Result<(), DynamicsError> {
+    check::data(model, data)?;
+    check::configuration(model, q)?;
+    check::vector("v", v, model.nv())?;
+    check::vector("a", a, model.nv())?;
+    for i in 0..model.nbodies() {
+        body_kinematics(model, data, i, q, Some(v));
+    }
+    propagate_accelerations(model, data, Some(a));
+    Ok(())
+}
+
+/// World poses and transforms `C_i` of all bodies for configuration `q`.
+pub fn update_placements(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+) -> Result<(), DynamicsError> {
+    check::data(model, data)?;
+    check::configuration(model, q)?;
+    for i in 0..model.nbodies() {
+        body_kinematics(model, data, i, q, None);
+    }
+    Ok(())
+}
+
+/// `a_i = C_i a_p(i) + J_i qddot_i + b_i` (2.34) for all bodies; `qdd = None` means zero.
+pub(crate) fn propagate_accelerations(model: &Model, data: &mut Data, qdd: Option<&DVector<f64>>) {
+    for (i, body) in model.bodies.iter().enumerate() {
+        let mut a = data.bias_acc[i];
+        if let Some(p) = body.parent {
+            a += data.x[i].apply_motion(&data.acc[p]);
+        }
+        if let Some(qdd) = qdd {
+            a += relative_motion(data, i, &body.joint, body.v_index, qdd);
+        }
+        data.acc[i] = a;
+    }
+}
+
+/// `J_i w_i` for the slice of a generalized vector `w` (velocity or acceleration) of body `i`.
+#[inline]
+pub(crate) fn relative_motion(
+    data: &Data,
+    i: usize,
+    joint: &Joint,
+    vi: usize,
+    w: &DVector<f64>,
+) -> Motion {
+    match joint {
+        Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => ax.motion(w[vi]),
+        Joint::Fixed => Motion::zero(),
+        Joint::EulerZxz | Joint::Quaternion => six_dof_motion(&data.jacobian6[i], &six(w, vi)),
+    }
+}
+
+/// `J_i^T f` accumulated into `out` at the body's index set.
+#[inline]
+pub(crate) fn add_projected_force(
+    data: &Data,
+    i: usize,
+    joint: &Joint,
+    vi: usize,
+    f: &Force,
+    out: &mut DVector<f64>,
+) {
+    match joint {
+        Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => out[vi] += ax.dot_force(f),
+        Joint::Fixed => {}
+        Joint::EulerZxz | Joint::Quaternion => {
+            let t = data.jacobian6[i].tr_mul(&f.to_vector());
+            for c in 0..6 {
+                out[vi + c] += t[c];
+            }
+        }
+    }
+}
+
+/// Six consecutive entries of a vector starting at `start`.
+#[inline]
+pub(crate) fn six(w: &DVector<f64>, start: usize) -> Vector6<f64> {
+    Vector6::from_iterator(w.rows(start, 6).iter().copied())
+}
+
+/// Relative transform, relative motion `J_i qdot_i` and joint bias `Jdot_i qdot_i` of body `i`.
+#[inline]
+fn joint_kinematics(
+    model: &Model,
+    data: &mut Data,
+    i: usize,
+    q: &DVector<f64>,
+    v: Option<&DVector<f64>>,
+) -> (SpatialTransform, Motion, Motion) {
+    let body = &model.bodies[i];
+    let pl = &body.placement_x;
+    let (qi, vi) = (body.q_index, body.v_index);
+    match &body.joint {
+        Joint::Revolute(ax) | Joint::Rotor(ax) => {
+            let (s, c) = (q[qi] * ax.scale).sin_cos();
+            let x = SpatialTransform::new(ax.axis.rot_tr_mul(s, c, &pl.rot), pl.trans);
+            let rel = v.map_or(Motion::zero(), |v| ax.motion(v[vi]));
+            (x, rel, Motion::zero())
+        }
+        Joint::Prismatic(ax) => {
+            let t = ax.axis.vector() * q[qi];
+            let x = SpatialTransform::new(pl.rot, pl.trans + pl.rot.tr_mul(&t));
+            let rel = v.map_or(Motion::zero(), |v| ax.motion(v[vi]));
+            (x, rel, Motion::zero())
+        }
+        Joint::Fixed => (*pl, Motion::zero(), Motion::zero()),
+        Joint::EulerZxz => {
+            let t = Vector3::new(q[qi], q[qi + 1], q[qi + 2]);
+            let (phi, theta, psi) = (q[qi + 3], q[qi + 4], q[qi + 5]);
+            let rq = euler_zxz_rotation(phi, theta, psi);
+            let x = SpatialTransform::new(rq.tr_mul(&pl.rot), pl.trans + pl.rot.tr_mul(&t));
+            data.jacobian6[i] = euler_zxz_jacobian(&rq, theta, psi);
+            let Some(v) = v else {
+                return (x, Motion::zero(), Motion::zero());
+            };
+            let qd = six(v, vi);
+            let rel = six_dof_motion(&data.jacobian6[i], &qd);
+            let dr = Vector3::new(qd[3], qd[4], qd[5]);
+            let cj = Motion::new(euler_zxz_jr_dot_qd(theta, psi, &dr), Vector3::zeros());
+            (x, rel, cj)
+        }
+        Joint::Quaternion => {
+            let t = Vector3::new(q[qi], q[qi + 1], q[qi + 2]);
+            let rq = quaternion_rotation(q[qi + 3], q[qi + 4], q[qi + 5], q[qi + 6])
+                .unwrap_or_else(Matrix3::identity);
+            let x = SpatialTransform::new(rq.tr_mul(&pl.rot), pl.trans + pl.rot.tr_mul(&t));
+            let Some(v) = v else {
+                return (x, Motion::zero(), Motion::zero());
+            };
+            let lin = Vector3::new(v[vi], v[vi + 1], v[vi + 2]);
+            let ang = Vector3::new(v[vi + 3], v[vi + 4], v[vi + 5]);
+            (
+                x,
+                Motion::new(ang, lin),
+                Motion::new(Vector3::zeros(), ang.cross(&lin)),
+            )
+        }
+    }
+}
+
+/// One step of the first forward recursion for body `i`: `C_i`, world pose, `g_i`, `v_i`
+/// (2.33) and `b_i` (2.37); without `v` velocities and `b_i` are zero.
+#[inline]
+pub(crate) fn body_kinematics(
+    model: &Model,
+    data: &mut Data,
+    i: usize,
+    q: &DVector<f64>,
+    v: Option<&DVector<f64>>,
+) {
+    let (x, rel, cj) = joint_kinematics(model, data, i, q, v);
+    match model.bodies[i].parent {
+        None => {
+            data.world_rot[i] = x.rot.transpose();
+            data.world_pos[i] = x.trans;
+            data.gravity_body[i] = x.rot * model.gravity;
+            data.vel[i] = rel;
+            data.bias_acc[i] = cj;
+        }
+        Some(p) => {
+            data.world_rot[i] = data.world_rot[p] * x.rot.transpose();
+            data.world_pos[i] = data.world_pos[p] + data.world_rot[p] * x.trans;
+            data.gravity_body[i] = x.rot * data.gravity_body[p];
+            if v.is_some() {
+                let vp = x.apply_motion(&data.vel[p]);
+                let w = vp.ang;
+                let rk = x.rot * x.trans;
+                data.vel[i] = vp + rel;
+                data.bias_acc[i] = Motion::new(
+                    w.cross(&rel.ang) + cj.ang,
+                    w.cross(&(w.cross(&rk) + rel.lin * 2.0)) + cj.lin,
+                );
+            } else {
+                data.vel[i] = Motion::zero();
+                data.bias_acc[i] = Motion::zero();
+            }
+        }
+    }
+    data.x[i] = x;
+}
+
+/// Body force `f_i = f_ext,i + f_g,i - h_i` of (2.56) (Algorithm 2.1, step 2).
+#[inline]
+pub(crate) fn body_force(model: &Model, data: &mut Data, i: usize, fext: Option<&[Wrench]>) {
+    let inertia = &model.bodies[i].inertia;
+    let mut f = inertia.gravity_force(&data.gravity_body[i]) - inertia.bias_force(&data.vel[i].ang);
+    if let Some(fext) = fext {
+        f += fext[i];
+    }
+    data.force[i] = f;
+}
+
+/// Full first forward recursion: kinematics and body forces for all bodies (Algorithm 2.2).
+pub(crate) fn first_forward(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    fext: Option<&[Wrench]>,
+) {
+    for i in 0..model.nbodies() {
+        body_kinematics(model, data, i, q, Some(v));
+        body_force(model, data, i, fext);
+    }
+}

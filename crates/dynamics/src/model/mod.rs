@@ -1,0 +1,173 @@
+//! Immutable multibody model: bodies in strict parent-before-child order with parent, child and
+//! brother links (section 2.4.1), joints and their coordinate index sets (2.26).
+
+mod builder;
+pub(crate) mod joint;
+
+pub use builder::{BodySpec, ModelBuilder};
+pub use joint::JointModel;
+
+use crate::spatial::{RigidInertia, SpatialTransform};
+use joint::Joint;
+use nalgebra::{DVector, Isometry3, Vector3};
+
+/// Index into the model's body list (parent-before-child order).
+pub type BodyId = usize;
+
+/// A joint with coordinates: its name and its slices of `q` and `v`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct JointInfo {
+    /// Joint name.
+    pub name: String,
+    /// Number of position coordinates.
+    pub nq: usize,
+    /// Number of velocity coordinates.
+    pub nv: usize,
+    /// First index in `q`.
+    pub q_index: usize,
+    /// First index in `v`.
+    pub v_index: usize,
+}
+
+/// One body of the model with its joint to the parent (a node of Fig. 2.7).
+#[derive(Clone, Debug)]
+pub struct Body {
+    pub(crate) name: String,
+    pub(crate) joint_name: String,
+    pub(crate) parent: Option<BodyId>,
+    pub(crate) first_child: Option<BodyId>,
+    pub(crate) brother: Option<BodyId>,
+    pub(crate) joint_model: JointModel,
+    pub(crate) joint: Joint,
+    pub(crate) placement: Isometry3<f64>,
+    /// Placement as a transform: `rot = A_k'p`, `trans` = joint origin in the parent frame.
+    pub(crate) placement_x: SpatialTransform,
+    pub(crate) inertia: RigidInertia,
+    pub(crate) q_index: usize,
+    pub(crate) v_index: usize,
+    /// Width of the index set into `v` (shared with the driver for rotors).
+    pub(crate) nv_set: usize,
+    /// Whether the body owns its index set (false for geared rotors).
+    pub(crate) owns_coordinates: bool,
+}
+
+impl Body {
+    /// Body name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+    /// Name of the joint to the parent.
+    pub fn joint_name(&self) -> &str {
+        &self.joint_name
+    }
+    /// Parent body `p(i)` (`None` = the fixed world frame).
+    pub fn parent(&self) -> Option<BodyId> {
+        self.parent
+    }
+    /// First child `c` (Fig. 2.7).
+    pub fn first_child(&self) -> Option<BodyId> {
+        self.first_child
+    }
+    /// Next child of the same parent, the brother `b` (Fig. 2.7).
+    pub fn brother(&self) -> Option<BodyId> {
+        self.brother
+    }
+    /// Joint model to the parent.
+    pub fn joint(&self) -> &JointModel {
+        &self.joint_model
+    }
+    /// Pose of the joint frame in the parent body frame.
+    pub fn placement(&self) -> &Isometry3<f64> {
+        &self.placement
+    }
+    /// Inertia in the body frame.
+    pub fn inertia(&self) -> &RigidInertia {
+        &self.inertia
+    }
+    /// First index of the body's index set in `q` (2.26).
+    pub fn q_index(&self) -> usize {
+        self.q_index
+    }
+    /// First index of the body's index set in `v` (2.26).
+    pub fn v_index(&self) -> usize {
+        self.v_index
+    }
+    /// Number of velocity coordinates the body's relative Jacobian `J_i` spans (2.35).
+    pub fn nv_set(&self) -> usize {
+        self.nv_set
+    }
+    /// False if the index set is borrowed from another body (geared rotors).
+    pub fn owns_coordinates(&self) -> bool {
+        self.owns_coordinates
+    }
+}
+
+/// Immutable multibody model (topology, joints, inertias, gravity).
+#[derive(Clone, Debug)]
+pub struct Model {
+    pub(crate) bodies: Vec<Body>,
+    pub(crate) joints: Vec<JointInfo>,
+    pub(crate) nq: usize,
+    pub(crate) nv: usize,
+    pub(crate) gravity: Vector3<f64>,
+    /// Parent array over velocity coordinates (`lambda` of the sparse LTL factorisation).
+    pub(crate) dof_parent: Vec<Option<usize>>,
+    pub(crate) has_rotors: bool,
+}
+
+impl Model {
+    /// Number of position coordinates.
+    pub fn nq(&self) -> usize {
+        self.nq
+    }
+    /// Number of velocity coordinates (DoFs).
+    pub fn nv(&self) -> usize {
+        self.nv
+    }
+    /// Number of bodies.
+    pub fn nbodies(&self) -> usize {
+        self.bodies.len()
+    }
+    /// Joints with coordinates, in coordinate order.
+    pub fn joints(&self) -> &[JointInfo] {
+        &self.joints
+    }
+    /// Body names in body-list order.
+    pub fn body_names(&self) -> Vec<&str> {
+        self.bodies.iter().map(|b| b.name.as_str()).collect()
+    }
+    /// Bodies in body-list order.
+    pub fn bodies(&self) -> &[Body] {
+        &self.bodies
+    }
+    /// One body.
+    pub fn body(&self, id: BodyId) -> Option<&Body> {
+        self.bodies.get(id)
+    }
+    /// Neutral configuration: zeros, identity quaternion `[0, 0, 0, 1]` for free joints.
+    pub fn neutral(&self) -> DVector<f64> {
+        let mut q = DVector::zeros(self.nq);
+        for b in &self.bodies {
+            if matches!(b.joint, Joint::Quaternion) {
+                q[b.q_index + 6] = 1.0;
+            }
+        }
+        q
+    }
+    /// Gravity in the world frame.
+    pub fn gravity(&self) -> Vector3<f64> {
+        self.gravity
+    }
+    /// Body index by name.
+    pub fn body_id(&self, name: &str) -> Option<BodyId> {
+        self.bodies.iter().position(|b| b.name == name)
+    }
+    /// Parent of each velocity coordinate in the tree of DoFs (`lambda`, thesis 2.10.1).
+    pub fn dof_parents(&self) -> &[Option<usize>] {
+        &self.dof_parent
+    }
+    /// Whether some body is a geared rotor (shares its driver's coordinate).
+    pub fn has_rotors(&self) -> bool {
+        self.has_rotors
+    }
+}

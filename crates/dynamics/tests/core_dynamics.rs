@@ -1,0 +1,175 @@
+//! Cross-checks of the three forward-dynamics methods, CRBA and RNEA on random trees.
+
+mod core_support;
+
+use biped_dynamics::{
+    forward_dynamics, forward_kinematics, inverse_dynamics, mass_matrix, Algorithm, Data, Force,
+    Model, Wrench,
+};
+use core_support::*;
+use nalgebra::{DMatrix, DVector, Vector3};
+use proptest::prelude::*;
+
+/// Random state `(q, v, tau, fext)` for a model.
+fn random_state(
+    model: &Model,
+    seed: u64,
+) -> (DVector<f64>, DVector<f64>, DVector<f64>, Vec<Wrench>) {
+    let mut r = rng(seed ^ 0x5eed);
+    let q = random_q(model, &mut r);
+    let v = random_vec(model.nv(), 2.0, &mut r);
+    let tau = random_vec(model.nv(), 5.0, &mut r);
+    let fext = (0..model.nbodies())
+        .map(|_| {
+            let t = random_vec(3, 2.0, &mut r);
+            let f = random_vec(3, 2.0, &mut r);
+            Force::new(
+                Vector3::new(t[0], t[1], t[2]),
+                Vector3::new(f[0], f[1], f[2]),
+            )
+        })
+        .collect();
+    (q, v, tau, fext)
+}
+
+/// Body Jacobians `Jbar_i` (6 x nv, body coordinates) from the velocity recursion with unit `v`.
+fn body_jacobians(model: &Model, q: &DVector<f64>) -> Vec<DMatrix<f64>> {
+    let mut data = Data::new(model);
+    let mut jac = vec![DMatrix::zeros(6, model.nv()); model.nbodies()];
+    let zero = DVector::zeros(model.nv());
+    for k in 0..model.nv() {
+        let mut e = DVector::zeros(model.nv());
+        e[k] = 1.0;
+        forward_kinematics(model, &mut data, q, &e, &zero).unwrap();
+        for (i, j) in jac.iter_mut().enumerate() {
+            j.column_mut(k).copy_from(&data.vel[i].to_vector());
+        }
+    }
+    jac
+}
+
+fn options(rotors: bool) -> TreeOptions {
+    TreeOptions {
+        rotors,
+        ..TreeOptions::default()
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
+
+    /// O(n), CRBA + Cholesky and sparse LTL agree to 1e-10 relative.
+    #[test]
+    fn three_methods_agree(seed in any::<u64>(), n in 1usize..60, with_fext in any::<bool>()) {
+        let model = random_model(seed, n, options(false));
+        let (q, v, tau, fext) = random_state(&model, seed);
+        let fext = with_fext.then_some(fext.as_slice());
+        let mut data = Data::new(&model);
+        let a_on = forward_dynamics(&model, &mut data, &q, &v, &tau, fext, Algorithm::On).unwrap().clone();
+        let a_crba = forward_dynamics(&model, &mut data, &q, &v, &tau, fext, Algorithm::Crba).unwrap().clone();
+        let a_sparse = forward_dynamics(&model, &mut data, &q, &v, &tau, fext, Algorithm::Sparse).unwrap().clone();
+        prop_assert!(rel_diff(&a_on, &a_crba) < 1e-10, "On vs Crba {}", rel_diff(&a_on, &a_crba));
+        prop_assert!(rel_diff(&a_sparse, &a_crba) < 1e-10, "Sparse vs Crba {}", rel_diff(&a_sparse, &a_crba));
+    }
+
+    /// With geared rotors (shared coordinates) CRBA and sparse LTL agree, and RNEA inverts both.
+    #[test]
+    fn rotors_crba_sparse_rnea(seed in any::<u64>(), n in 2usize..40) {
+        let model = random_model(seed, n, options(true));
+        let (q, v, tau, fext) = random_state(&model, seed);
+        let mut data = Data::new(&model);
+        let a_crba = forward_dynamics(&model, &mut data, &q, &v, &tau, Some(&fext), Algorithm::Crba).unwrap().clone();
+        let a_sparse = forward_dynamics(&model, &mut data, &q, &v, &tau, Some(&fext), Algorithm::Sparse).unwrap().clone();
+        prop_assert!(rel_diff(&a_sparse, &a_crba) < 1e-10);
+        let tau2 = inverse_dynamics(&model, &mut data, &q, &v, &a_crba, Some(&fext)).unwrap();
+        prop_assert!(rel_diff(tau2, &tau) < 1e-9, "{}", rel_diff(tau2, &tau));
+    }
+
+    /// `inverse_dynamics(q, v, forward_dynamics(q, v, tau)) = tau` with external wrenches.
+    #[test]
+    fn inverse_of_forward(seed in any::<u64>(), n in 1usize..60) {
+        let model = random_model(seed, n, options(false));
+        let (q, v, tau, fext) = random_state(&model, seed);
+        let mut data = Data::new(&model);
+        let a = forward_dynamics(&model, &mut data, &q, &v, &tau, Some(&fext), Algorithm::On).unwrap().clone();
+        let tau2 = inverse_dynamics(&model, &mut data, &q, &v, &a, Some(&fext)).unwrap();
+        prop_assert!(rel_diff(tau2, &tau) < 1e-9, "{}", rel_diff(tau2, &tau));
+    }
+
+    /// Mass matrix: symmetric, PD, equal to sum_i Jbar_i^T M_i Jbar_i and to columns of RNEA.
+    #[test]
+    fn mass_matrix_two_routes(seed in any::<u64>(), n in 1usize..40, rotors in any::<bool>()) {
+        let mut opts = options(rotors);
+        opts.gravity = Vector3::zeros();
+        let model = random_model(seed, n, opts);
+        let (q, _, _, _) = random_state(&model, seed);
+        let mut data = Data::new(&model);
+        let m = mass_matrix(&model, &mut data, &q).unwrap().clone();
+        let scale = m.amax().max(1.0);
+        prop_assert!((&m - m.transpose()).amax() < 1e-12 * scale);
+        prop_assert!(m.clone().cholesky().is_some());
+        // Route 1: kinetic energy of the bodies, Jbar_i from the velocity recursion.
+        let jac = body_jacobians(&model, &q);
+        let mut m_ref = DMatrix::zeros(model.nv(), model.nv());
+        for (i, body) in model.bodies().iter().enumerate() {
+            let mi = nalgebra::DMatrix::from_column_slice(6, 6, body.inertia().to_matrix().as_slice());
+            m_ref += jac[i].transpose() * mi * &jac[i];
+        }
+        prop_assert!((&m - &m_ref).amax() < 1e-10 * scale, "{}", (&m - &m_ref).amax());
+        // Route 2: M e_k = RNEA(q, 0, e_k) without gravity.
+        let zero = DVector::zeros(model.nv());
+        for k in 0..model.nv() {
+            let mut e = DVector::zeros(model.nv());
+            e[k] = 1.0;
+            let col = inverse_dynamics(&model, &mut data, &q, &zero, &e, None).unwrap();
+            prop_assert!((col - m.column(k)).amax() < 1e-10 * scale);
+        }
+    }
+
+    /// External wrenches act as the generalized force `sum_i Jbar_i^T f_i`.
+    #[test]
+    fn external_wrench_projection(seed in any::<u64>(), n in 1usize..30) {
+        let model = random_model(seed, n, options(true));
+        let (q, v, _, fext) = random_state(&model, seed);
+        let a = random_vec(model.nv(), 1.0, &mut rng(seed));
+        let mut data = Data::new(&model);
+        let with = inverse_dynamics(&model, &mut data, &q, &v, &a, Some(&fext)).unwrap().clone();
+        let without = inverse_dynamics(&model, &mut data, &q, &v, &a, None).unwrap().clone();
+        let jac = body_jacobians(&model, &q);
+        let mut proj = DVector::zeros(model.nv());
+        for (i, f) in fext.iter().enumerate() {
+            proj += jac[i].transpose() * DVector::from_column_slice(f.to_vector().as_slice());
+        }
+        prop_assert!(rel_diff(&(without - with), &proj) < 1e-10);
+    }
+}
+
+/// Gravity alone: a single free body falls with acceleration g (world), no rotation.
+#[test]
+fn free_body_falls_with_gravity() {
+    for root in [0u8, 1] {
+        let model = random_model(
+            7,
+            1,
+            TreeOptions {
+                root,
+                ..TreeOptions::default()
+            },
+        );
+        let mut r = rng(1);
+        let q = random_q(&model, &mut r);
+        let v = DVector::zeros(6);
+        let tau = DVector::zeros(6);
+        let mut data = Data::new(&model);
+        for algo in [Algorithm::On, Algorithm::Crba, Algorithm::Sparse] {
+            forward_dynamics(&model, &mut data, &q, &v, &tau, None, algo).unwrap();
+            // Acceleration of the CoM in the world.
+            let b = &model.bodies()[0];
+            let a = &data.acc[0];
+            let acc_com = a.lin + a.ang.cross(&b.inertia().com());
+            let world = data.world_rot[0] * acc_com;
+            assert!((world - model.gravity()).norm() < 1e-10, "{algo:?} {world}");
+            assert!(a.ang.norm() < 1e-10);
+        }
+    }
+}
