@@ -1,0 +1,63 @@
+//! Typed errors of the URDF importer, each naming the file and the element at fault.
+
+use crate::ModelError;
+use std::fmt;
+
+/// Where in a URDF document a problem is: file, line (when found in the text) and element.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Location {
+    /// File name (or a caller-chosen source label for in-memory text).
+    pub file: String,
+    /// 1-based line of the element's start tag, if it could be found in the text.
+    pub line: Option<usize>,
+    /// The element, e.g. `joint "knee"` or `link "foot"`.
+    pub element: String,
+}
+
+impl fmt::Display for Location {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(line) => write!(f, "{}:{}: {}", self.file, line, self.element),
+            None => write!(f, "{}: {}", self.file, self.element),
+        }
+    }
+}
+
+/// Errors of [`load_file`](super::load_file) and [`load_str`](super::load_str).
+#[derive(Debug, thiserror::Error)]
+pub enum UrdfError {
+    /// The file could not be read.
+    #[error("{file}: cannot read URDF file: {source}")]
+    Io {
+        /// File name.
+        file: String,
+        /// Underlying I/O error.
+        source: std::io::Error,
+    },
+    /// The text is not well-formed URDF XML (urdf-rs / XML parser message).
+    #[error("{file}: not a valid URDF document: {message}")]
+    Parse {
+        /// File name.
+        file: String,
+        /// Parser message.
+        message: String,
+    },
+    /// An element is well-formed but its content is unusable.
+    #[error("{at}: {field}: {problem}")]
+    Invalid {
+        /// The element at fault.
+        at: Location,
+        /// The attribute or child element at fault, e.g. `axis xyz`.
+        field: String,
+        /// What is wrong with it.
+        problem: String,
+    },
+    /// The model builder rejected a body built from this element (e.g. a non-physical inertia).
+    #[error("{at}: {source}")]
+    Model {
+        /// The element at fault.
+        at: Location,
+        /// The builder's error.
+        source: ModelError,
+    },
+}

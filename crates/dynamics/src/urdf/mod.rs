@@ -1,0 +1,84 @@
+//! URDF import (urdf-rs): a URDF kinematic tree becomes a [`Model`].
+//!
+//! Conventions:
+//! - `revolute` and `continuous` joints become [`JointModel::Revolute`], `prismatic` ones
+//!   [`JointModel::Prismatic`] (axis normalised; a zero axis is an error), `floating` ones
+//!   [`JointModel::FreeQuaternion`]; `planar` and `spherical` joints are rejected.
+//! - `fixed` joints are merged: the child link's inertia is added to the body it is welded to
+//!   ([`RigidInertia::merged`]) and its frame is kept, so joints below it attach correctly.
+//! - With [`UrdfOptions::floating`] the root link gets a `FreeQuaternion` joint named `"root"`
+//!   attached to the world (q = `[x, y, z, qx, qy, qz, qw]`, v = body-frame `[linear; angular]`);
+//!   otherwise the root link is welded to the world and its inertia does not matter.
+//! - `<inertial>`: mass, CoM at the inertial origin `xyz`, and the tensor given about the CoM in
+//!   the axes rotated by the inertial origin `rpy` (`R = Rz(yaw) Ry(pitch) Rx(roll)`).
+//! - Rotational inertias with all entries below 1e-12 kg m^2 are taken as zero (with a warning).
+//! - Meshes, visuals, collisions, limits and transmissions are ignored. `<mimic>` tags are
+//!   ignored with a warning (the joints stay independent) unless [`UrdfOptions::reject_mimic`].
+//! - Bodies and coordinates follow a depth-first traversal from the root, children in file order.
+
+mod error;
+mod locate;
+mod tree;
+
+pub use error::{Location, UrdfError};
+
+use crate::{BodyId, Model};
+#[cfg(doc)]
+use crate::{JointModel, RigidInertia};
+use nalgebra::Isometry3;
+use std::path::Path;
+
+/// Options of the URDF importer.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct UrdfOptions {
+    /// Give the root link a free (quaternion) joint named `"root"` instead of welding it to the world.
+    pub floating: bool,
+    /// Treat `<mimic>` tags as errors instead of ignoring them with a warning.
+    pub reject_mimic: bool,
+}
+
+/// Where a URDF link ended up: the body it belongs to and its pose in that body's frame.
+#[derive(Debug, Clone)]
+pub struct LinkFrame {
+    /// URDF link name.
+    pub link: String,
+    /// Body the link is part of (`None` = welded to the world).
+    pub body: Option<BodyId>,
+    /// Pose of the link frame in the body frame (world frame if `body` is `None`).
+    pub pose: Isometry3<f64>,
+}
+
+/// An imported URDF: the model, every link's frame, and warnings for the caller to show.
+pub struct UrdfModel {
+    /// The multibody model.
+    pub model: Model,
+    /// Every URDF link, in traversal order, with the body it was merged into.
+    pub links: Vec<LinkFrame>,
+    /// Non-fatal issues (ignored `<mimic>` tags, negligible inertias), one line each, located.
+    pub warnings: Vec<String>,
+}
+
+/// Reads and converts a URDF file.
+pub fn load_file(path: impl AsRef<Path>, options: &UrdfOptions) -> Result<UrdfModel, UrdfError> {
+    let path = path.as_ref();
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|source| UrdfError::Io {
+        file: file.clone(),
+        source,
+    })?;
+    load_str(&text, &file, options)
+}
+
+/// Converts URDF text; `file` labels the source in error messages.
+pub fn load_str(xml: &str, file: &str, options: &UrdfOptions) -> Result<UrdfModel, UrdfError> {
+    let robot = urdf_rs::read_from_string(xml).map_err(|e| UrdfError::Parse {
+        file: file.to_string(),
+        message: one_line(&e.to_string()),
+    })?;
+    tree::convert(&robot, &tree::Source { xml, file }, options)
+}
+
+/// Collapses a multi-line parser message into one line.
+fn one_line(message: &str) -> String {
+    message.split_whitespace().collect::<Vec<_>>().join(" ")
+}
