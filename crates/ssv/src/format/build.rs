@@ -79,40 +79,95 @@ fn segment_geometry(
     span: std::ops::Range<usize>,
     loc: &Locator,
 ) -> Res<Segment> {
+    check_sources(raw, field, span.clone(), loc)?;
     let name = raw.name.get_ref().clone();
-    match (&raw.ssvs, &raw.mirror_of, &raw.version_of) {
-        (Some(ssvs), None, None) => {
-            let list = build_ssvs(ssvs.get_ref(), field, loc)?;
-            Segment::new(name, list).map_err(|e| loc.at(ssvs.span(), format!("{field}.ssvs"), e))
-        }
-        (None, Some(base), None) => {
-            let base_seg = lookup(model, base, &format!("{field}.mirror_of"), loc)?;
-            let plane = raw.plane.as_ref().ok_or_else(|| {
-                loc.at(
-                    base.span(),
-                    format!("{field}.plane"),
-                    FormatErrorKind::Missing("plane"),
-                )
-            })?;
-            let plane = parse_plane(plane, &format!("{field}.plane"), loc)?;
-            Ok(base_seg.mirrored(name, plane))
-        }
-        (None, None, Some(base)) => {
-            let base_seg = lookup(model, base, &format!("{field}.version_of"), loc)?;
-            let keep = raw.keep.as_ref().ok_or_else(|| {
-                loc.at(
-                    base.span(),
-                    format!("{field}.keep"),
-                    FormatErrorKind::Missing("keep"),
-                )
-            })?;
-            let indices = build_indices(keep, &format!("{field}.keep"), loc)?;
-            base_seg
-                .version(name, &indices)
-                .map_err(|e| loc.at(keep.span(), format!("{field}.keep"), e))
-        }
-        _ => Err(loc.at(span, field.to_string(), FormatErrorKind::SegmentSource)),
+    if let Some(ssvs) = &raw.ssvs {
+        let list = build_ssvs(ssvs.get_ref(), field, loc)?;
+        return Segment::new(name, list)
+            .map_err(|e| loc.at(ssvs.span(), format!("{field}.ssvs"), e));
     }
+    if let Some(base) = &raw.mirror_of {
+        let base_seg = lookup(model, base, &format!("{field}.mirror_of"), loc)?;
+        let plane = raw.plane.as_ref().ok_or_else(|| {
+            loc.at(
+                base.span(),
+                format!("{field}.plane"),
+                FormatErrorKind::Missing("plane"),
+            )
+        })?;
+        let plane = parse_plane(plane, &format!("{field}.plane"), loc)?;
+        return Ok(base_seg.mirrored(name, plane));
+    }
+    let base = raw.version_of.as_ref().ok_or_else(|| {
+        loc.at(
+            span.clone(),
+            field.to_string(),
+            FormatErrorKind::SegmentSource,
+        )
+    })?;
+    let base_seg = lookup(model, base, &format!("{field}.version_of"), loc)?;
+    let keep = raw.keep.as_ref().ok_or_else(|| {
+        loc.at(
+            base.span(),
+            format!("{field}.keep"),
+            FormatErrorKind::Missing("keep"),
+        )
+    })?;
+    let indices = build_indices(keep, &format!("{field}.keep"), loc)?;
+    base_seg
+        .version(name, &indices)
+        .map_err(|e| loc.at(keep.span(), format!("{field}.keep"), e))
+}
+
+/// Exactly one geometry source, and companion keys only with their source.
+fn check_sources(
+    raw: &RawSegment,
+    field: &str,
+    span: std::ops::Range<usize>,
+    loc: &Locator,
+) -> Res<()> {
+    let sources = [
+        ("ssvs", raw.ssvs.as_ref().map(|s| s.span())),
+        ("mirror_of", raw.mirror_of.as_ref().map(|s| s.span())),
+        ("version_of", raw.version_of.as_ref().map(|s| s.span())),
+    ];
+    let mut present: Vec<_> = sources
+        .iter()
+        .filter_map(|(k, s)| s.clone().map(|s| (k, s)))
+        .collect();
+    present.sort_by_key(|(_, s)| s.start);
+    match present.as_slice() {
+        [] => return Err(loc.at(span, field.to_string(), FormatErrorKind::SegmentSource)),
+        [_] => {}
+        [_, (key, s), ..] => {
+            let kind = FormatErrorKind::SegmentSource;
+            return Err(loc.at(s.clone(), format!("{field}.{key}"), kind));
+        }
+    }
+    let companions = [
+        (
+            "plane",
+            "mirror_of",
+            raw.plane.as_ref().map(|s| s.span()),
+            raw.mirror_of.is_some(),
+        ),
+        (
+            "keep",
+            "version_of",
+            raw.keep.as_ref().map(|s| s.span()),
+            raw.version_of.is_some(),
+        ),
+    ];
+    for (key, owner, s, has_owner) in companions {
+        if let (Some(s), false) = (s, has_owner) {
+            return Err(loc.at(
+                s,
+                format!("{field}.{key}"),
+                FormatErrorKind::Unexpected(key, owner),
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn lookup<'m>(

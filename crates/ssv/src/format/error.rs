@@ -64,6 +64,9 @@ pub enum FormatErrorKind {
     /// A negative `keep` index.
     #[error("SSV index must be >= 0, got {0}")]
     NegativeIndex(i64),
+    /// A companion key without its geometry source (e.g. `plane` without `mirror_of`).
+    #[error("`{0}` is only allowed together with `{1}`")]
+    Unexpected(&'static str, &'static str),
     /// A non-finite pose component.
     #[error("pose value is not finite ({0})")]
     NonFinitePose(f64),

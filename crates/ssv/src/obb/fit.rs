@@ -67,14 +67,18 @@ fn pca_frame(ssvs: &[Ssv]) -> Option<UnitQuaternion<f64>> {
         let d = v.coords - mean;
         cov += d * d.transpose();
     }
-    let mut axes = SymmetricEigen::new(cov / n).eigenvectors;
+    let cov = cov / n;
+    if !cov.iter().all(|x| x.is_finite()) {
+        return None;
+    }
+    let mut axes = SymmetricEigen::try_new(cov, f64::EPSILON, 200)?.eigenvectors;
     if axes.determinant() < 0.0 {
         axes.set_column(2, &(-axes.column(2)));
     }
     if !axes.iter().all(|x| x.is_finite()) {
         return None;
     }
-    let rot = Rotation3::from_matrix(&axes);
+    let rot = Rotation3::from_matrix_unchecked(axes);
     Some(UnitQuaternion::from_rotation_matrix(&rot))
 }
 
