@@ -12,8 +12,8 @@ mod sphere;
 
 pub use mirror::{MirrorPlane, UnknownPlane};
 pub use pair::{
-    closest_ssv_pair, closest_ssv_pair_brute_force, segment_pair_distance, ClosestPair,
-    PairDistance,
+    closest_ssv_pair, closest_ssv_pair_brute_force, closest_ssv_pair_brute_force_with,
+    closest_ssv_pair_with, segment_pair_distance, ClosestPair, PairDistance,
 };
 pub use sphere::BoundingSphere;
 

@@ -3,6 +3,7 @@
 
 use super::Segment;
 use crate::distance::distance;
+use crate::primitives::Ssv;
 use crate::result::DistanceResult;
 
 /// Slack on the sphere bound so that rounding can never prune the true closest pair.
@@ -59,7 +60,17 @@ pub fn segment_pair_distance(a: &Segment, b: &Segment, activation_distance: f64)
 
 /// Exact closest SSV pair, skipping pairs whose bounding-sphere lower bound cannot beat the
 /// best distance found so far. Starts from the pair with the smallest bound.
+#[inline]
 pub fn closest_ssv_pair(a: &Segment, b: &Segment) -> ClosestPair {
+    closest_ssv_pair_with(a, b, distance)
+}
+
+/// [`closest_ssv_pair`] with a caller-supplied SSV distance function (e.g. a reference
+/// solver in tests); `dist` is called only for pairs the sphere bound cannot exclude.
+pub fn closest_ssv_pair_with<F>(a: &Segment, b: &Segment, mut dist: F) -> ClosestPair
+where
+    F: FnMut(&Ssv, &Ssv) -> DistanceResult,
+{
     let (sa, sb) = (a.world_spheres(), b.world_spheres());
     let (mut seed_a, mut seed_b, mut seed_lb) = (0, 0, f64::INFINITY);
     for (i, s) in sa.iter().enumerate() {
@@ -72,7 +83,7 @@ pub fn closest_ssv_pair(a: &Segment, b: &Segment) -> ClosestPair {
     }
     let (wa, wb) = (a.world_ssvs(), b.world_ssvs());
     let mut best = ClosestPair {
-        result: distance(&wa[seed_a], &wb[seed_b]),
+        result: dist(&wa[seed_a], &wb[seed_b]),
         ssv_a: seed_a,
         ssv_b: seed_b,
     };
@@ -81,7 +92,7 @@ pub fn closest_ssv_pair(a: &Segment, b: &Segment) -> ClosestPair {
             if (i, j) == (seed_a, seed_b) || !may_beat(s, t, best.result.distance) {
                 continue;
             }
-            let result = distance(&wa[i], &wb[j]);
+            let result = dist(&wa[i], &wb[j]);
             if result.distance < best.result.distance {
                 best = ClosestPair {
                     result,
@@ -103,10 +114,18 @@ fn may_beat(s: &super::BoundingSphere, t: &super::BoundingSphere, best: f64) -> 
 
 /// Reference: the closest SSV pair by evaluating every pair (for tests and benchmarks).
 pub fn closest_ssv_pair_brute_force(a: &Segment, b: &Segment) -> ClosestPair {
+    closest_ssv_pair_brute_force_with(a, b, distance)
+}
+
+/// [`closest_ssv_pair_brute_force`] with a caller-supplied SSV distance function.
+pub fn closest_ssv_pair_brute_force_with<F>(a: &Segment, b: &Segment, mut dist: F) -> ClosestPair
+where
+    F: FnMut(&Ssv, &Ssv) -> DistanceResult,
+{
     let mut best: Option<ClosestPair> = None;
     for (i, x) in a.world_ssvs().iter().enumerate() {
         for (j, y) in b.world_ssvs().iter().enumerate() {
-            let result = distance(x, y);
+            let result = dist(x, y);
             if best.map_or(true, |c| result.distance < c.result.distance) {
                 best = Some(ClosestPair {
                     result,
@@ -117,7 +136,7 @@ pub fn closest_ssv_pair_brute_force(a: &Segment, b: &Segment) -> ClosestPair {
         }
     }
     best.unwrap_or_else(|| ClosestPair {
-        result: distance(&a.world_ssvs()[0], &b.world_ssvs()[0]),
+        result: dist(&a.world_ssvs()[0], &b.world_ssvs()[0]),
         ssv_a: 0,
         ssv_b: 0,
     })

@@ -66,3 +66,43 @@ pub fn pose(t: f64) -> impl Strategy<Value = Isometry3<f64>> {
             )
         })
 }
+
+/// Full reference result between two SSVs (reference closest points, radii applied).
+pub fn ref_result(a: &Ssv, b: &Ssv) -> biped_ssv::DistanceResult {
+    use biped_ssv::PrimitiveParam;
+    let c = reference::closest(a.vertices(), b.vertices());
+    let d = c.point_b - c.point_a;
+    let normal = if c.dist > 0.0 {
+        d / c.dist
+    } else {
+        Vector3::x()
+    };
+    let param = |n: usize, w: [f64; 3]| match n {
+        1 => PrimitiveParam::Point,
+        2 => PrimitiveParam::Line(w[1]),
+        _ => PrimitiveParam::Triangle(w[1], w[2]),
+    };
+    biped_ssv::DistanceResult {
+        distance: c.dist - a.radius() - b.radius(),
+        point_a: c.point_a + normal * a.radius(),
+        point_b: c.point_b - normal * b.radius(),
+        normal,
+        closest_a: c.point_a,
+        closest_b: c.point_b,
+        param_a: param(a.vertices().len(), c.bary_a),
+        param_b: param(b.vertices().len(), c.bary_b),
+    }
+}
+
+/// The mirror image `S pose S` of a rigid pose about a coordinate plane.
+pub fn mirror_pose(pose: &Isometry3<f64>, plane: biped_ssv::MirrorPlane) -> Isometry3<f64> {
+    let k = plane.normal_axis();
+    let mut s = nalgebra::Matrix3::identity();
+    s[(k, k)] = -1.0;
+    let r = s * pose.rotation.to_rotation_matrix().into_inner() * s;
+    let rot = nalgebra::Rotation3::from_matrix_unchecked(r);
+    Isometry3::from_parts(
+        Translation3::from(s * pose.translation.vector),
+        UnitQuaternion::from_rotation_matrix(&rot),
+    )
+}
