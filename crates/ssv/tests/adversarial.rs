@@ -7,17 +7,17 @@ mod support;
 /// Near-parallel segments (angles down to 1e-12 rad and exactly 0), segments near-parallel
 /// to triangle planes and edges, sliver triangles, tiny segments, nearly coincident points.
 mod near_degenerate {
-    crate::support::pair_tests!(crate::support::families::near_degenerate, 15_000);
+    crate::support::pair_tests!(crate::support::families::near_degenerate, 30_000);
 }
 
 /// Radii summing exactly to the primitive distance (signed distance 0).
 mod touching {
-    crate::support::pair_tests!(crate::support::families::touching, 10_000);
+    crate::support::pair_tests!(crate::support::families::touching, 15_000);
 }
 
 /// Crossing segments, segments piercing triangles, intersecting triangles, points on them.
 mod intersecting {
-    crate::support::pair_tests!(crate::support::families::intersecting, 10_000);
+    crate::support::pair_tests!(crate::support::families::intersecting, 15_000);
 }
 
 /// Minimal reproducer found by `near_degenerate::pt`: the point lies exactly on edge v0v1

@@ -243,3 +243,25 @@ fn sliver(r: &Raw, at: &dyn Fn(f64, f64, f64) -> Point3<f64>) -> [Point3<f64>; 3
     let v1 = if r.1[3] < 0.15 { v0 } else { at(l, 0.0, 0.0) };
     [v0, v1, at(t * l, w, 0.0)]
 }
+
+/// Exact power-of-two rescaling (2^-20 .. 2^20, i.e. about 1e-6 .. 1e6) of a random,
+/// near-degenerate or intersecting pair; checked with a purely relative tolerance.
+pub fn pow2_scaled(ka: Kind, kb: Kind, a: &Raw, b: &Raw, c: &Raw) -> (Ssv, Ssv) {
+    let base: super::Builder = match (c.1[5] * 3.0) as usize {
+        0 => random,
+        1 => near_degenerate,
+        _ => intersecting,
+    };
+    let (sa, sb) = base(ka, kb, a, b, c);
+    let f = 2f64.powi((c.1[4] * 41.0) as i32 - 20);
+    (rescale(ka, &sa, f), rescale(kb, &sb, f))
+}
+
+/// The SSV with all coordinates and the radius multiplied by `f`.
+fn rescale(kind: Kind, s: &Ssv, f: f64) -> Ssv {
+    let mut v = [Point3::origin(); 3];
+    for (vi, si) in v.iter_mut().zip(s.vertices().iter().cycle()) {
+        *vi = si * f;
+    }
+    make(kind, v, s.radius() * f)
+}

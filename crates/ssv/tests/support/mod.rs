@@ -41,11 +41,13 @@ pub fn pair(ka: Kind, kb: Kind, build: Builder) -> impl Strategy<Value = (Ssv, S
     (raw(), raw(), raw()).prop_map(move |(a, b, c)| build(ka, kb, &a, &b, &c))
 }
 
-/// Proptest configuration with `cases` cases and no shrinking-time surprises.
+/// Proptest configuration with `cases` cases, thorough shrinking, and no regression
+/// files (minimal reproducers found this way become explicit tests instead).
 pub fn config(cases: u32) -> ProptestConfig {
     ProptestConfig {
         cases,
         max_shrink_iters: 20_000,
+        failure_persistence: None,
         ..ProptestConfig::default()
     }
 }
@@ -79,12 +81,17 @@ pub fn make(kind: Kind, v: [Point3<f64>; 3], r: f64) -> Ssv {
 /// `1e-9 * scale` the closed forms have ~4.5e6 ulps of slack for conditioning (near-parallel
 /// cases), yet any wrong branch or clamp produces errors of the size of the geometry itself.
 pub fn scale(a: &Ssv, b: &Ssv) -> f64 {
+    scale_from(1.0, a, b)
+}
+
+/// `max(floor, largest |coordinate|, radii)`; floor 0 gives a purely relative scale.
+pub fn scale_from(floor: f64, a: &Ssv, b: &Ssv) -> f64 {
     a.vertices()
         .iter()
         .chain(b.vertices())
         .flat_map(|v| v.iter().copied())
         .chain([a.radius(), b.radius()])
-        .fold(1.0, |m, x| m.max(x.abs()))
+        .fold(floor, |m, x| m.max(x.abs()))
 }
 
 /// Signed reference distance of (6.9): primitive distance by the KKT solver minus radii.
@@ -111,18 +118,30 @@ pub fn typed(a: &Ssv, b: &Ssv) -> DistanceResult {
     }
 }
 
-/// Full check of one pair in both orders: reference distance, invariants, swap relation.
+/// Full check of one pair in both orders: reference distance, invariants, swap relation,
+/// with the tolerance `1e-9 * scale(a, b)`.
 pub fn check_pair(a: &Ssv, b: &Ssv) -> Result<(), TestCaseError> {
+    check_pair_with(a, b, scale(a, b))
+}
+
+/// [`check_pair`] with a purely relative scale (no floor 1): tiny configurations must be
+/// as accurate, relative to their size, as unit-size ones.
+pub fn check_pair_relative(a: &Ssv, b: &Ssv) -> Result<(), TestCaseError> {
+    check_pair_with(a, b, scale_from(0.0, a, b))
+}
+
+/// [`check_pair`] with tolerances relative to `scale`.
+fn check_pair_with(a: &Ssv, b: &Ssv, scale: f64) -> Result<(), TestCaseError> {
     let d_ref = reference_distance(a, b);
-    let tol = 1e-9 * scale(a, b);
+    let tol = 1e-9 * scale;
     let ab = typed(a, b);
-    check_result(a, b, &ab, d_ref, tol)?;
+    check_result(a, b, &ab, d_ref, tol, scale)?;
     prop_assert!(
         ab == biped_ssv::distance(a, b),
         "dispatch differs for {a:?} {b:?}"
     );
     let ba = biped_ssv::distance(b, a);
-    check_result(b, a, &ba, d_ref, tol)?;
+    check_result(b, a, &ba, d_ref, tol, scale)?;
     let same_kind = std::mem::discriminant(a) == std::mem::discriminant(b);
     if same_kind {
         prop_assert!(
@@ -186,6 +205,7 @@ pub fn check_result(
     r: &DistanceResult,
     d_ref: f64,
     tol: f64,
+    scale: f64,
 ) -> Result<(), TestCaseError> {
     let ctx = || format!("\n a = {a:?}\n b = {b:?}\n result = {r:?}\n d_ref = {d_ref:?}");
     prop_assert!(all_finite(r), "non-finite output{}", ctx());
@@ -217,7 +237,7 @@ pub fn check_result(
         ctx()
     );
     // Unit normal; surface points (6.11): pure arithmetic, so a tight tolerance.
-    let ftol = 1e-12 * scale(a, b);
+    let ftol = 1e-12 * scale;
     prop_assert!(
         (r.normal.norm() - 1.0).abs() <= 1e-12,
         "|normal| != 1{}",
@@ -250,22 +270,26 @@ pub fn check_result(
     Ok(())
 }
 
-/// One proptest per pair type for a case family: `pair_tests!(family, cases)` expands to
-/// tests `pp`, `pl`, `pt`, `ll`, `lt`, `tt`, each running `check_pair` on `cases` cases
-/// (both argument orders, so LP, TP, TL are covered too).
+/// One proptest per pair type for a case family: `pair_tests!(family, cases[, check])`
+/// expands to tests `pp`, `pl`, `pt`, `ll`, `lt`, `tt`, each running `check` (default
+/// `check_pair`) on `cases` cases (both argument orders, so LP, TP, TL are covered too).
 macro_rules! pair_tests {
     ($family:path, $cases:expr) => {
-        use $crate::support::{check_pair, config, pair, Kind};
-        use proptest::prelude::*;
-        $crate::support::pair_tests!(@each $family, $cases, pp: P P, pl: P L, pt: P T, ll: L L, lt: L T, tt: T T);
+        $crate::support::pair_tests!($family, $cases, $crate::support::check_pair);
     };
-    (@each $family:path, $cases:expr, $($name:ident: $ka:ident $kb:ident),*) => {
+    ($family:path, $cases:expr, $check:path) => {
+        use $crate::support::{config, pair, Kind};
+        use proptest::prelude::*;
+        $crate::support::pair_tests!(@each $family, $cases, $check,
+            pp: P P, pl: P L, pt: P T, ll: L L, lt: L T, tt: T T);
+    };
+    (@each $family:path, $cases:expr, $check:path, $($name:ident: $ka:ident $kb:ident),*) => {
         proptest! {
             #![proptest_config(config($cases))]
             $(
                 #[test]
                 fn $name((a, b) in pair(Kind::$ka, Kind::$kb, $family)) {
-                    check_pair(&a, &b)?;
+                    $check(&a, &b)?;
                 }
             )*
         }
