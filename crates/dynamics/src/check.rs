@@ -37,7 +37,7 @@ pub(crate) fn configuration(model: &Model, q: &DVector<f64>) -> Result<(), Dynam
     for b in &model.bodies {
         if matches!(b.joint, Joint::Quaternion) {
             let n2 = q.rows(b.q_index + 3, 4).norm_squared();
-            if !(n2 > 1e-24) {
+            if n2.is_nan() || n2 <= 1e-24 {
                 return Err(DynamicsError::ZeroQuaternion {
                     q_index: b.q_index + 3,
                 });

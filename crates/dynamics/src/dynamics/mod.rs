@@ -51,7 +51,7 @@ pub fn forward_dynamics<'d>(
                 solve::cholesky_in_place(&mut data.factor)?;
                 solve::cholesky_solve_in_place(&data.factor, &mut data.ddq);
             } else {
-                solve::ltl_in_place(&mut data.factor, &model.dof_parent)?;
+                solve::ltl_in_place(&mut data.factor, &model.dof_parent, &data.mass)?;
                 solve::ltl_solve_in_place(&data.factor, &model.dof_parent, &mut data.ddq);
             }
             let ddq = std::mem::take(&mut data.ddq);

@@ -11,6 +11,7 @@
 //! without forming `P_i` or `K_i`. Bodies are dispatched by joint type with one `match` per body;
 //! a sub-system body type (2.6) slots in as another arm of the same three passes.
 
+use super::solve::check_pivot;
 use crate::check;
 use crate::kinematics::{first_forward, six};
 use crate::model::joint::Joint;
@@ -60,7 +61,7 @@ pub fn backward_pass(
                 let mbar = &data.mbar[i];
                 let u = ax.apply_inertia(mbar);
                 let d = ax.dot_force(&u);
-                if !(d > 0.0) || !d.is_finite() {
+                if d <= 0.0 || !d.is_finite() {
                     return Err(DynamicsError::NotPositiveDefinite {
                         index: body.v_index,
                         pivot: d,
@@ -112,6 +113,10 @@ fn six_dof_backward(
         index: vi,
         pivot: d.determinant(),
     })?;
+    let l = chol.l_dirty();
+    for c in 0..6 {
+        check_pivot(vi + c, l[(c, c)] * l[(c, c)], d[(c, c)])?;
+    }
     let pi = chol.solve(&u.transpose());
     let b = data.bias_acc[i].to_vector();
     let fbar = data.fbar[i].to_vector();

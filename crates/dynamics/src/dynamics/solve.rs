@@ -4,6 +4,20 @@
 use crate::DynamicsError;
 use nalgebra::{DMatrix, DVector};
 
+/// Relative pivot tolerance: a pivot below `PIVOT_TOLERANCE` times the original diagonal entry
+/// means the matrix is numerically singular (e.g. Euler ZXZ at `sin(theta) = 0`).
+pub(crate) const PIVOT_TOLERANCE: f64 = 1e-12;
+
+/// Checks one pivot against the original diagonal entry.
+#[inline]
+pub(crate) fn check_pivot(index: usize, pivot: f64, original: f64) -> Result<(), DynamicsError> {
+    if pivot > PIVOT_TOLERANCE * original.abs() && pivot.is_finite() {
+        Ok(())
+    } else {
+        Err(DynamicsError::NotPositiveDefinite { index, pivot })
+    }
+}
+
 /// Dense Cholesky `M = L L^T` in place (lower triangle of `m` becomes `L`).
 pub(crate) fn cholesky_in_place(m: &mut DMatrix<f64>) -> Result<(), DynamicsError> {
     let n = m.nrows();
@@ -12,9 +26,7 @@ pub(crate) fn cholesky_in_place(m: &mut DMatrix<f64>) -> Result<(), DynamicsErro
         for k in 0..j {
             d -= m[(j, k)] * m[(j, k)];
         }
-        if !(d > 0.0) || !d.is_finite() {
-            return Err(DynamicsError::NotPositiveDefinite { index: j, pivot: d });
-        }
+        check_pivot(j, d, m[(j, j)])?;
         let l = d.sqrt();
         m[(j, j)] = l;
         for i in (j + 1)..n {
@@ -49,15 +61,15 @@ pub(crate) fn cholesky_solve_in_place(l: &DMatrix<f64>, b: &mut DVector<f64>) {
 
 /// Reverse sparse factorisation `M = L^T L` in place (lower triangle), touching only the
 /// entries `(k, j)` with `j` an ancestor of `k` in `lambda`; fill-in free for tree patterns.
+/// `original` is the unfactored matrix, used for the relative pivot test.
 pub(crate) fn ltl_in_place(
     m: &mut DMatrix<f64>,
     lambda: &[Option<usize>],
+    original: &DMatrix<f64>,
 ) -> Result<(), DynamicsError> {
     for k in (0..m.nrows()).rev() {
         let d = m[(k, k)];
-        if !(d > 0.0) || !d.is_finite() {
-            return Err(DynamicsError::NotPositiveDefinite { index: k, pivot: d });
-        }
+        check_pivot(k, d, original[(k, k)])?;
         let a = d.sqrt();
         m[(k, k)] = a;
         let mut i = lambda[k];

@@ -254,7 +254,7 @@ fn checked_joint(spec: &BodySpec) -> Result<JointModel, ModelError> {
     let axis = |a: &Unit<Vector3<f64>>| {
         let v = a.as_ref();
         let n = v.norm();
-        if !v.iter().all(|x| x.is_finite()) || !(n > 1e-9) {
+        if !v.iter().all(|x| x.is_finite()) || n <= 1e-9 {
             return Err(ModelError::ZeroAxis {
                 body: spec.name.clone(),
             });

@@ -149,7 +149,7 @@ pub(crate) fn quaternion_jacobian() -> Matrix6<f64> {
 /// Rotation of a (not necessarily normalised) quaternion `[qx, qy, qz, qw]`; `None` if ~zero.
 pub(crate) fn quaternion_rotation(x: f64, y: f64, z: f64, w: f64) -> Option<Matrix3<f64>> {
     let n2 = x * x + y * y + z * z + w * w;
-    if !(n2 > 1e-24) {
+    if n2.is_nan() || n2 <= 1e-24 {
         return None;
     }
     let q = UnitQuaternion::new_normalize(nalgebra::Quaternion::new(w, x, y, z));
