@@ -1,0 +1,274 @@
+//! TT: triangle-swept sphere to triangle-swept sphere (6.4.6).
+//!
+//! The enumeration of 6.4.6: nine edge-edge pairs (LL) and six vertex-face projections
+//! (6.21), plus the intersection test: an edge of one triangle piercing the other gives
+//! c* = 0. For two triangles that do not intersect, one point of a closest pair lies on a
+//! boundary, so the minimum over these candidates is exact; intersecting (non-coplanar)
+//! triangles always have an edge piercing the other one, and overlapping coplanar triangles
+//! have crossing edges or a vertex inside the other face. A flat triangle has no face
+//! candidates: it is the union of its edges (its longest edge).
+
+use super::assemble::{assemble, edge_to_tri, Closest, Geom};
+use super::line_line::segment_params;
+use super::triangle_frame::TriFrame;
+use crate::primitives::Tss;
+use crate::result::{DistanceResult, PrimitiveParam};
+use nalgebra::Point3;
+
+/// Best candidate so far: squared distance, parameters and points on a and b.
+#[derive(Debug, Clone, Copy)]
+struct Best {
+    d2: f64,
+    sa: (f64, f64),
+    sb: (f64, f64),
+    pa: Point3<f64>,
+    pb: Point3<f64>,
+}
+
+impl Best {
+    #[inline(always)]
+    fn offer(&mut self, sa: (f64, f64), sb: (f64, f64), pa: Point3<f64>, pb: Point3<f64>) {
+        let d2 = (pb - pa).norm_squared();
+        if d2 < self.d2 {
+            *self = Self { d2, sa, sb, pa, pb };
+        }
+    }
+}
+
+/// Vertex-face candidates of the vertices of `a` over the face of `b` and the piercing test of
+/// the edges of `a` through `b`. `swap` tells whether `a` is the query's second triangle.
+#[inline(always)]
+fn vertex_face_and_piercing(a: &TriFrame, b: &TriFrame, swap: bool, best: &mut Best) {
+    const VERTEX: [(f64, f64); 3] = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)];
+    let w = [b.project(&a.v[0]), b.project(&a.v[1]), b.project(&a.v[2])];
+    let order = |x: Best| {
+        if swap {
+            Best {
+                sa: x.sb,
+                sb: x.sa,
+                pa: x.pb,
+                pb: x.pa,
+                ..x
+            }
+        } else {
+            x
+        }
+    };
+    for i in 0..3 {
+        if w[i].inside() {
+            let sb = b.params(&w[i]);
+            let (pa, pb) = (a.v[i], b.point_at(sb));
+            let d2 = (pb - pa).norm_squared();
+            if d2 < best.d2 {
+                *best = order(Best {
+                    d2,
+                    sa: VERTEX[i],
+                    sb,
+                    pa,
+                    pb,
+                });
+            }
+        }
+    }
+    for i in 0..3 {
+        let (h0, h1) = (w[i].h, w[(i + 1) % 3].h);
+        if (h0 < 0.0 && h1 > 0.0) || (h0 > 0.0 && h1 < 0.0) {
+            let t = h0 / (h0 - h1);
+            let p = a.v[i] + a.e[i] * t;
+            let wp = b.project(&p);
+            if wp.inside() {
+                let (sa, sb) = (edge_to_tri(i, t), b.params(&wp));
+                *best = order(Best {
+                    d2: 0.0,
+                    sa,
+                    sb,
+                    pa: p,
+                    pb: p,
+                });
+                return;
+            }
+        }
+    }
+}
+
+/// Closest pair of two triangles; a flat triangle contributes only its edges.
+#[inline(always)]
+fn enumerate(a: &TriFrame, b: &TriFrame) -> Best {
+    let mut best = Best {
+        d2: f64::INFINITY,
+        sa: (0.0, 0.0),
+        sb: (0.0, 0.0),
+        pa: a.v[0],
+        pb: b.v[0],
+    };
+    for i in 0..3 {
+        for j in 0..3 {
+            let (s, t) = segment_params(&a.v[i], &a.e[i], &b.v[j], &b.e[j]);
+            let (pa, pb) = (a.v[i] + a.e[i] * s, b.v[j] + b.e[j] * t);
+            best.offer(edge_to_tri(i, s), edge_to_tri(j, t), pa, pb);
+        }
+    }
+    if !b.flat {
+        vertex_face_and_piercing(a, b, false, &mut best);
+    }
+    if !a.flat && best.d2 > 0.0 {
+        vertex_face_and_piercing(b, a, true, &mut best);
+    }
+    best
+}
+
+/// TT: triangle to triangle (6.4.6).
+#[inline]
+pub fn tt(a: &Tss, b: &Tss) -> DistanceResult {
+    let (fa, fb) = (TriFrame::new(a), TriFrame::new(b));
+    let r = enumerate(&fa, &fb);
+    let c = Closest {
+        a: r.pa,
+        b: r.pb,
+        param_a: PrimitiveParam::Triangle(r.sa.0, r.sa.1),
+        param_b: PrimitiveParam::Triangle(r.sb.0, r.sb.1),
+    };
+    assemble(
+        c,
+        a.radius(),
+        b.radius(),
+        Geom::Triangle(a),
+        Geom::Triangle(b),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::distance;
+    use super::super::testkit::*;
+    use super::*;
+    use crate::primitives::Ssv;
+    use nalgebra::Vector3;
+
+    fn base() -> Tss {
+        tss([0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0], 0.0)
+    }
+
+    #[test]
+    fn parallel_stacked_and_vertex_face() {
+        let b = tss([0.1, 0.1, 1.5], [1.0, 0.1, 1.5], [0.1, 1.0, 1.5], 0.25);
+        let r = tt(&base(), &b);
+        assert!((r.distance - 1.25).abs() < 1e-15, "{r:?}");
+        assert!((r.normal - Vector3::z()).norm() < 1e-15);
+        // Tilted triangle with a vertex 0.5 above the face.
+        let b = tss([0.5, 0.5, 0.5], [0.5, 3.0, 4.0], [3.0, 0.5, 4.0], 0.0);
+        let r = tt(&base(), &b);
+        assert!((r.distance - 0.5).abs() < 1e-15, "{r:?}");
+        assert_eq!(r.param_b, PrimitiveParam::Triangle(0.0, 0.0));
+    }
+
+    #[test]
+    fn edge_edge_closest_pair() {
+        // A triangle hanging under the hypotenuse, rotated so only edges are closest.
+        let b = tss([2.0, 2.0, -1.0], [2.0, 2.0, 1.0], [4.0, 4.0, 0.0], 0.0);
+        let r = tt(&base(), &b);
+        assert!((r.distance - 2f64.sqrt()).abs() < 1e-15, "{r:?}");
+    }
+
+    #[test]
+    fn intersecting_triangles() {
+        // b pierces a's interior with its edge v0v1.
+        let b = tss([0.5, 0.5, -1.0], [0.5, 0.5, 1.0], [5.0, 5.0, 0.0], 0.1);
+        let r = tt(&base(), &b);
+        assert_eq!(r.c_star().norm(), 0.0);
+        assert!((r.distance + 0.1).abs() < 1e-15);
+        // Rule: normal of triangle b.
+        let [v0, v1, v2] = *b.vertices();
+        let nb = (v1 - v0).cross(&(v2 - v0)).normalize();
+        assert!((r.normal - nb).norm() < 1e-15, "{r:?}");
+        // Interlocked: each triangle's edge pierces the other (a "chain link").
+        let b = tss([1.0, 0.5, -1.0], [1.0, 0.5, 1.0], [1.0, -3.0, 0.0], 0.0);
+        let r = tt(&base(), &b);
+        assert_eq!(r.distance, 0.0);
+    }
+
+    #[test]
+    fn touching_and_coplanar() {
+        // Shared vertex.
+        let b = tss([2.0, 0.0, 0.0], [4.0, 0.0, 1.0], [4.0, 1.0, -1.0], 0.0);
+        assert!(tt(&base(), &b).distance.abs() < 1e-15);
+        // Coplanar, one inside the other: vertex-face.
+        let b = tss([0.2, 0.2, 0.0], [0.6, 0.2, 0.0], [0.2, 0.6, 0.0], 0.0);
+        let r = tt(&base(), &b);
+        assert!(r.distance.abs() < 1e-15, "{r:?}");
+        // Coplanar, disjoint: gap of 1 between hypotenuse and a parallel edge.
+        let h = 2f64.sqrt();
+        let b = tss(
+            [1.0 + h / 2.0, 1.0 + h / 2.0, 0.0],
+            [5.0, 0.0, 0.0],
+            [0.0, 5.0, 0.0],
+            0.0,
+        );
+        let r = tt(&base(), &b);
+        assert!((r.distance - 1.0).abs() < 1e-14, "{r:?}");
+    }
+
+    #[test]
+    fn flat_triangles() {
+        let col = tss([0.0, 0.0, 1.0], [1.0, 1.0, 1.0], [0.5, 0.5, 1.0], 0.0);
+        let r = tt(&base(), &col);
+        assert!((r.distance - 1.0).abs() < 1e-15);
+        let r = tt(&col, &base());
+        assert!((r.distance - 1.0).abs() < 1e-15);
+        let dot = tss([3.0, 3.0, 0.0], [3.0, 3.0, 0.0], [3.0, 3.0, 0.0], 0.0);
+        let r = tt(&col, &dot);
+        let want: f64 = Vector3::new(2.0, 2.0, -1.0).norm();
+        assert!((r.distance - want).abs() < 1e-15, "{r:?}");
+        let r = tt(&dot, &dot);
+        assert_eq!(r.distance, 0.0);
+        assert_eq!(r.normal, Vector3::z());
+    }
+
+    #[test]
+    fn random_against_certificate_brute_force_and_motion() {
+        let mut rng = rng(41);
+        for i in 0..3000 {
+            let scale = log_scale(&mut rng);
+            let a: Ssv = rand_tss(&mut rng, scale).into();
+            let b: Ssv = rand_tss(&mut rng, scale).into();
+            let r = distance(&a, &b);
+            check_result(&r, &a, &b, scale_of(&a, &b));
+            if i % 50 == 0 {
+                let brute = brute_force(&a, &b, 40);
+                assert!(r.distance <= brute + 1e-12 * scale);
+                assert!(brute - r.distance <= 0.1 * scale);
+                check_rigid(&a, &b, &rand_pose(&mut rng, scale), 4.0 * scale);
+            }
+        }
+    }
+
+    /// Near-parallel planes, slivers, and intersecting pairs built by construction.
+    #[test]
+    fn near_parallel_slivers_and_intersections() {
+        let mut rng = rng(42);
+        for k in 0..=16 {
+            for _ in 0..60 {
+                let scale = log_scale(&mut rng);
+                let a = rand_tss(&mut rng, scale);
+                let [v0, v1, v2] = *a.vertices();
+                let n = (v1 - v0).cross(&(v2 - v0)).normalize();
+                let tilt = n * scale * 10f64.powi(-k);
+                let shift = rand_point(&mut rng, scale).coords;
+                let b = Tss::new(v0 + shift, v1 + shift + tilt, v2 + shift - tilt, 0.0).unwrap();
+                let sliver = Tss::new(v0, v1, v0 + (v1 - v0) * 0.4 + tilt, 0.0).unwrap();
+                // Through an interior point of a: a triangle containing it, steep or tilted.
+                let c = v0 + (v1 - v0) * 0.3 + (v2 - v0) * 0.3;
+                let d = rand_point(&mut rng, scale).coords;
+                let cut = Tss::new(c - d - tilt, c + d + tilt, c + shift, 0.0).unwrap();
+                let pairs = [(a, b), (a, sliver), (sliver, b), (a, cut)];
+                for (x, y) in pairs {
+                    let (x, y): (Ssv, Ssv) = (x.into(), y.into());
+                    let r = distance(&x, &y);
+                    check_result_tol(&r, &x, &y, scale_of(&x, &y), 2e-10);
+                }
+                let r = tt(&a, &cut);
+                assert!(r.distance.abs() <= 1e-12 * scale, "{k} {r:?}");
+            }
+        }
+    }
+}
