@@ -1,32 +1,154 @@
-//! `biped model`, `biped dynamics`, `biped bench dynamics`.
+//! `biped model`, `biped dynamics`, `biped bench dynamics`: the dynamics library on the command line.
+
+mod bench;
+mod plot;
+mod source;
+mod stream;
 
 use super::CliResult;
-use clap::Args;
+use clap::{ArgGroup, Args, ValueEnum};
+use source::SourceArgs;
+use std::io::Write;
 use std::process::ExitCode;
 
 /// Arguments of `biped model`.
 #[derive(Args)]
-pub struct ModelArgs {}
+#[command(group(ArgGroup::new("source").required(true).args(["urdf", "dill"])))]
+pub struct ModelArgs {
+    #[command(flatten)]
+    source: SourceArgs,
+    /// Print one JSON object `{"nq", "nv", "joints", "bodies", "neutral"}`.
+    #[arg(long)]
+    json: bool,
+}
+
+/// Forward-dynamics algorithm selectable on the command line.
+#[derive(Clone, Copy, ValueEnum)]
+pub enum AlgorithmArg {
+    /// O(n) three-pass algorithm (Alg. 2.1-2.4).
+    On,
+    /// CRBA mass matrix, RNEA bias, dense Cholesky.
+    Crba,
+    /// CRBA with the sparse LTL factorisation of Featherstone and Orin.
+    Sparse,
+}
+
+impl From<AlgorithmArg> for biped_dynamics::Algorithm {
+    fn from(a: AlgorithmArg) -> Self {
+        match a {
+            AlgorithmArg::On => Self::On,
+            AlgorithmArg::Crba => Self::Crba,
+            AlgorithmArg::Sparse => Self::Sparse,
+        }
+    }
+}
 
 /// Arguments of `biped dynamics`.
 #[derive(Args)]
-pub struct DynamicsArgs {}
+#[command(group(ArgGroup::new("source").required(true).args(["urdf", "dill"])))]
+#[command(group(ArgGroup::new("mode").args(["mass_matrix", "inverse"])))]
+pub struct DynamicsArgs {
+    #[command(flatten)]
+    source: SourceArgs,
+    /// Forward-dynamics algorithm.
+    #[arg(long, value_enum, default_value = "on")]
+    algorithm: AlgorithmArg,
+    /// Read `{"q"}` lines and write the mass matrix `{"M": [[..], ..]}`.
+    #[arg(long)]
+    mass_matrix: bool,
+    /// Read `{"q", "v", "a"}` lines and write the joint forces `{"tau"}` (RNEA).
+    #[arg(long)]
+    inverse: bool,
+}
 
 /// Arguments of `biped bench dynamics`.
 #[derive(Args)]
-pub struct BenchArgs {}
+#[command(group(ArgGroup::new("source").required(true).args(["urdf", "dill", "dill_range"])))]
+pub struct BenchArgs {
+    #[command(flatten)]
+    source: SourceArgs,
+    /// Dill levels `A..B` (inclusive); also writes a run-time plot like Fig. 2.19 under `out/`.
+    #[arg(long, value_name = "A..B", value_parser = parse_range)]
+    dill_range: Option<(u32, u32)>,
+    /// Print JSON (`{"on": ns, "crba": ns, "sparse": ns, ..}`; an array with `"n"` for a range).
+    #[arg(long)]
+    json: bool,
+}
+
+/// Parses `A..B` (inclusive, A <= B).
+fn parse_range(text: &str) -> Result<(u32, u32), String> {
+    let (a, b) = text
+        .split_once("..")
+        .ok_or_else(|| format!("expected A..B, got \"{text}\""))?;
+    let parse = |s: &str| {
+        s.trim()
+            .parse::<u32>()
+            .map_err(|e| format!("\"{s}\" in \"{text}\": {e}"))
+    };
+    let (a, b) = (parse(a)?, parse(b)?);
+    if a > b {
+        return Err(format!("empty range {a}..{b}"));
+    }
+    Ok((a, b))
+}
 
 /// Run `biped model`.
-pub fn run_model(_args: ModelArgs) -> CliResult {
+pub fn run_model(args: ModelArgs) -> CliResult {
+    let loaded = args.source.to_source()?.load()?;
+    let model = &loaded.model;
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    if args.json {
+        serde_json::to_writer(&mut out, &source::describe(model))?;
+        writeln!(out)?;
+    } else {
+        writeln!(
+            out,
+            "{}: nq = {}, nv = {}, {} bodies",
+            loaded.label,
+            model.nq(),
+            model.nv(),
+            model.nbodies()
+        )?;
+        for j in model.joints() {
+            writeln!(
+                out,
+                "  {:<32} q[{}..{}] v[{}..{}]",
+                j.name,
+                j.q_index,
+                j.q_index + j.nq,
+                j.v_index,
+                j.v_index + j.nv
+            )?;
+        }
+    }
+    out.flush()?;
     Ok(ExitCode::SUCCESS)
 }
 
 /// Run `biped dynamics`.
-pub fn run_dynamics(_args: DynamicsArgs) -> CliResult {
-    Ok(ExitCode::SUCCESS)
+pub fn run_dynamics(args: DynamicsArgs) -> CliResult {
+    let loaded = args.source.to_source()?.load()?;
+    let mode = if args.mass_matrix {
+        stream::Mode::MassMatrix
+    } else if args.inverse {
+        stream::Mode::Inverse
+    } else {
+        stream::Mode::Forward(args.algorithm.into())
+    };
+    let stdin = std::io::stdin().lock();
+    let stdout = std::io::BufWriter::new(std::io::stdout().lock());
+    let all_good = stream::run(&loaded.model, mode, stdin, stdout)?;
+    Ok(if all_good {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::FAILURE
+    })
 }
 
 /// Run `biped bench dynamics`.
-pub fn run_bench(_args: BenchArgs) -> CliResult {
-    Ok(ExitCode::SUCCESS)
+pub fn run_bench(args: BenchArgs) -> CliResult {
+    match args.dill_range {
+        Some((a, b)) => bench::run_range(a, b, args.json),
+        None => bench::run_one(&args.source.to_source()?, args.json),
+    }
 }

@@ -1,0 +1,204 @@
+//! `biped bench dynamics`: median time of one forward-dynamics call per algorithm and per O(n)
+//! pass (thesis 2.10, Figs. 2.19 and 2.21), on one model or over a range of Dill levels.
+
+use super::source::{Loaded, ModelSource};
+use super::CliResult;
+use biped_dynamics::dill::{dill, dill_test_state};
+use biped_dynamics::{forward_dynamics, on, Algorithm, Data, Model};
+use nalgebra::DVector;
+use rand::{Rng, SeedableRng};
+use serde::Serialize;
+use std::hint::black_box;
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+/// Target duration of one timed batch.
+const BATCH: Duration = Duration::from_millis(2);
+/// Number of batches whose median is reported.
+const BATCHES: usize = 31;
+/// Upper bound of the time spent per measured function (slow models get fewer batches).
+const BUDGET: Duration = Duration::from_millis(400);
+
+/// Median run times of one model, in nanoseconds per call.
+#[derive(Serialize)]
+pub struct Timings {
+    /// Dill level (range runs only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub n: Option<u32>,
+    /// Number of velocity coordinates.
+    pub nv: usize,
+    /// O(n) algorithm, whole call.
+    pub on: f64,
+    /// CRBA + dense Cholesky.
+    pub crba: f64,
+    /// CRBA + sparse LTL.
+    pub sparse: f64,
+    /// O(n) first forward pass (kinematics).
+    pub fw1: f64,
+    /// O(n) backward pass (articulated inertias).
+    pub bw: f64,
+    /// O(n) second forward pass (accelerations).
+    pub fw2: f64,
+}
+
+/// Median nanoseconds per call of `f`, after a warm-up that also sizes the batches.
+pub fn median_ns(mut f: impl FnMut()) -> f64 {
+    let mut reps: u32 = 1;
+    let per_batch = loop {
+        let t = Instant::now();
+        for _ in 0..reps {
+            f();
+        }
+        let e = t.elapsed();
+        if e >= BATCH || reps >= 1 << 24 {
+            break e;
+        }
+        reps *= 2;
+    };
+    let batches =
+        (BUDGET.as_secs_f64() / per_batch.as_secs_f64()).clamp(3.0, BATCHES as f64) as usize;
+    let mut samples: Vec<f64> = (0..batches)
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..reps {
+                f();
+            }
+            t.elapsed().as_nanos() as f64 / f64::from(reps)
+        })
+        .collect();
+    samples.sort_by(f64::total_cmp);
+    samples[samples.len() / 2]
+}
+
+/// A reproducible random state: uniform joint values in [-1, 1], unit quaternions for free joints.
+pub fn random_state(model: &Model, seed: u64) -> (DVector<f64>, DVector<f64>, DVector<f64>) {
+    let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+    let mut q = DVector::from_fn(model.nq(), |_, _| rng.random_range(-1.0..1.0));
+    for j in model.joints().iter().filter(|j| j.nq == 7) {
+        let mut quat = q.rows_mut(j.q_index + 3, 4);
+        let norm = quat.norm();
+        quat /= norm;
+    }
+    let v = DVector::from_fn(model.nv(), |_, _| rng.random_range(-1.0..1.0));
+    let tau = DVector::from_fn(model.nv(), |_, _| rng.random_range(-1.0..1.0));
+    (q, v, tau)
+}
+
+/// Times every algorithm and O(n) pass on one model at one state.
+pub fn time_model(
+    model: &Model,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    tau: &DVector<f64>,
+) -> Result<Timings, Box<dyn std::error::Error>> {
+    let mut data = Data::new(model);
+    let mut algo = |a: Algorithm| -> Result<f64, Box<dyn std::error::Error>> {
+        forward_dynamics(model, &mut data, q, v, tau, None, a)?;
+        Ok(median_ns(|| {
+            black_box(forward_dynamics(model, &mut data, q, v, tau, None, a).is_ok());
+        }))
+    };
+    let (on_ns, crba, sparse) = (
+        algo(Algorithm::On)?,
+        algo(Algorithm::Crba)?,
+        algo(Algorithm::Sparse)?,
+    );
+    let (fw1, bw, fw2) = time_passes(model, q, v, tau)?;
+    Ok(Timings {
+        n: None,
+        nv: model.nv(),
+        on: on_ns,
+        crba,
+        sparse,
+        fw1,
+        bw,
+        fw2,
+    })
+}
+
+/// Times the three passes of the O(n) algorithm separately. The backward pass accumulates into
+/// the articulated inertias that the first pass resets, so it is timed as `FW1 + BW` minus `FW1`;
+/// the second forward pass only reads the backward results and is timed alone.
+fn time_passes(
+    model: &Model,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    tau: &DVector<f64>,
+) -> Result<(f64, f64, f64), Box<dyn std::error::Error>> {
+    let mut data = Data::new(model);
+    forward_dynamics(model, &mut data, q, v, tau, None, Algorithm::On)?;
+    let fw1 = median_ns(|| {
+        black_box(on::forward_pass_1(model, &mut data, q, v, None).is_ok());
+    });
+    let fw1_bw = median_ns(|| {
+        black_box(on::forward_pass_1(model, &mut data, q, v, None).is_ok());
+        black_box(on::backward_pass(model, &mut data, tau).is_ok());
+    });
+    let fw2 = median_ns(|| {
+        black_box(on::forward_pass_2(model, &mut data));
+    });
+    Ok((fw1, (fw1_bw - fw1).max(0.0), fw2))
+}
+
+/// `biped bench dynamics --urdf/--dill`: one model.
+pub fn run_one(source: &ModelSource, json: bool) -> CliResult {
+    let Loaded { model, label } = source.load()?;
+    let (q, v, tau) = match source {
+        ModelSource::Dill(_) => {
+            let (q, v) = dill_test_state(&model);
+            (q, v, DVector::zeros(model.nv()))
+        }
+        _ => random_state(&model, 1),
+    };
+    let t = time_model(&model, &q, &v, &tau)?;
+    if json {
+        println!("{}", serde_json::to_string(&t)?);
+    } else {
+        println!("{label}: nv = {}", t.nv);
+        print_table(std::slice::from_ref(&t));
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `biped bench dynamics --dill-range A..B`: every level, a table or JSON array, and an SVG plot.
+pub fn run_range(a: u32, b: u32, json: bool) -> CliResult {
+    let mut rows = Vec::new();
+    for n in a..=b {
+        let model = dill(n)?;
+        let (q, v) = dill_test_state(&model);
+        let mut t = time_model(&model, &q, &v, &DVector::zeros(model.nv()))?;
+        t.n = Some(n);
+        rows.push(t);
+    }
+    let path = std::path::PathBuf::from(format!("out/dill_fd_runtime_{a}-{b}.svg"));
+    super::plot::runtime_svg(&path, &rows)?;
+    if json {
+        println!("{}", serde_json::to_string(&rows)?);
+    } else {
+        print_table(&rows);
+    }
+    eprintln!("plot: {}", path.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Human-readable table, times in microseconds.
+fn print_table(rows: &[Timings]) {
+    println!(
+        "{:>4} {:>6} {:>12} {:>12} {:>12} {:>10} {:>10} {:>10}",
+        "n", "nv", "O(n) us", "CRBA us", "sparse us", "FW1 us", "BW us", "FW2 us"
+    );
+    for t in rows {
+        let n = t.n.map_or("-".to_string(), |n| n.to_string());
+        println!(
+            "{:>4} {:>6} {:>12.3} {:>12.3} {:>12.3} {:>10.3} {:>10.3} {:>10.3}",
+            n,
+            t.nv,
+            t.on / 1e3,
+            t.crba / 1e3,
+            t.sparse / 1e3,
+            t.fw1 / 1e3,
+            t.bw / 1e3,
+            t.fw2 / 1e3
+        );
+    }
+}

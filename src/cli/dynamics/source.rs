@@ -1,0 +1,116 @@
+//! Where a model comes from (`--urdf`, `--dill`): one enum, one loader, one JSON description.
+
+use biped_dynamics::urdf::{load_file, UrdfOptions};
+use biped_dynamics::Model;
+use clap::Args;
+use serde::Serialize;
+use std::path::PathBuf;
+
+/// Command-line options selecting a model (the callers declare which are mutually exclusive).
+#[derive(Args)]
+pub struct SourceArgs {
+    /// Load a URDF file.
+    #[arg(long, value_name = "FILE")]
+    urdf: Option<PathBuf>,
+    /// Give the URDF root link a free-flyer joint named "root" (q: xyz + quaternion xyzw).
+    #[arg(long, requires = "urdf")]
+    floating: bool,
+    /// Reject URDF `<mimic>` joints instead of ignoring them with a warning.
+    #[arg(long, requires = "urdf")]
+    reject_mimic: bool,
+    /// Use Featherstone's Dill(N) benchmark tree (2^N revolute bodies, thesis 2.10.1).
+    #[arg(long, value_name = "N")]
+    dill: Option<u32>,
+}
+
+/// A model source; adding one is one variant here and one arm in [`ModelSource::load`].
+pub enum ModelSource {
+    /// A URDF file with import options.
+    Urdf(PathBuf, UrdfOptions),
+    /// Dill(n).
+    Dill(u32),
+}
+
+/// A loaded model and a short label for reports.
+pub struct Loaded {
+    /// The model.
+    pub model: Model,
+    /// E.g. `Dill(4)` or the URDF path.
+    pub label: String,
+}
+
+impl SourceArgs {
+    /// The selected source (clap guarantees at most one; none is an error).
+    pub fn to_source(&self) -> Result<ModelSource, String> {
+        match (&self.urdf, self.dill) {
+            (Some(path), None) => Ok(ModelSource::Urdf(
+                path.clone(),
+                UrdfOptions {
+                    floating: self.floating,
+                    reject_mimic: self.reject_mimic,
+                },
+            )),
+            (None, Some(n)) => Ok(ModelSource::Dill(n)),
+            _ => Err("give exactly one model source: --urdf FILE or --dill N".into()),
+        }
+    }
+}
+
+impl ModelSource {
+    /// Builds the model; URDF warnings go to stderr.
+    pub fn load(&self) -> Result<Loaded, Box<dyn std::error::Error>> {
+        Ok(match self {
+            ModelSource::Urdf(path, options) => {
+                let imported = load_file(path, options)?;
+                for w in &imported.warnings {
+                    eprintln!("warning: {w}");
+                }
+                Loaded {
+                    model: imported.model,
+                    label: path.display().to_string(),
+                }
+            }
+            ModelSource::Dill(n) => Loaded {
+                model: biped_dynamics::dill::dill(*n)?,
+                label: format!("Dill({n})"),
+            },
+        })
+    }
+}
+
+/// One joint of `biped model --json`.
+#[derive(Serialize)]
+pub struct JointJson<'a> {
+    name: &'a str,
+    nq: usize,
+    nv: usize,
+}
+
+/// The `biped model --json` object.
+#[derive(Serialize)]
+pub struct ModelJson<'a> {
+    nq: usize,
+    nv: usize,
+    joints: Vec<JointJson<'a>>,
+    bodies: Vec<&'a str>,
+    neutral: Vec<f64>,
+}
+
+/// The JSON description of a model: sizes, joints in coordinate order, bodies, neutral q.
+pub fn describe(model: &Model) -> ModelJson<'_> {
+    ModelJson {
+        nq: model.nq(),
+        nv: model.nv(),
+        joints: model
+            .joints()
+            .iter()
+            .map(|j| JointJson {
+                name: &j.name,
+                nq: j.nq,
+                nv: j.nv,
+            })
+            .collect(),
+        bodies: model.body_names(),
+        neutral: model.neutral().iter().copied().collect(),
+    }
+}
