@@ -183,7 +183,7 @@ fn weights(face: &[usize], t: &[f64]) -> Option<[f64; 3]> {
     for (k, &tk) in t.iter().enumerate() {
         w[face[k + 1]] = tk;
     }
-    if w.iter().any(|&x| !(x >= -FEAS_TOL)) {
+    if w.iter().any(|&x| !x.is_finite() || x < -FEAS_TOL) {
         return None;
     }
     let w = w.map(|x| x.max(0.0));

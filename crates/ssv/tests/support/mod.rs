@@ -45,10 +45,9 @@ pub fn pair(ka: Kind, kb: Kind, build: Builder) -> impl Strategy<Value = (Ssv, S
 /// files (minimal reproducers found this way become explicit tests instead).
 pub fn config(cases: u32) -> ProptestConfig {
     ProptestConfig {
-        cases,
         max_shrink_iters: 20_000,
         failure_persistence: None,
-        ..ProptestConfig::default()
+        ..ProptestConfig::with_cases(cases)
     }
 }
 
