@@ -82,7 +82,9 @@ pub fn backward_pass(
                 let mbar = &data.mbar[i];
                 (*mbar, mbar.apply(&data.bias_acc[i]) - data.fbar[i])
             }
-            Joint::EulerZxz | Joint::Quaternion => six_dof_backward(data, i, body.v_index, tau)?,
+            Joint::EulerZxz | Joint::Quaternion => {
+                six_dof_backward(data, i, body.v_index, tau, body.parent.is_some())?
+            }
             Joint::Rotor(_) => {
                 return Err(DynamicsError::Unsupported(
                     "the tree-case O(n) algorithm cannot handle geared rotors",
@@ -99,11 +101,13 @@ pub fn backward_pass(
 }
 
 /// Backward step of a 6-DoF joint: returns `M-bar - U D^-1 U^T` and `k_i`.
+/// A root joint (`propagate = false`) needs only `p_i`: its parent acceleration is zero.
 fn six_dof_backward(
     data: &mut Data,
     i: usize,
     vi: usize,
     tau: &DVector<f64>,
+    propagate: bool,
 ) -> Result<(ArticulatedInertia, Force), DynamicsError> {
     let mbar = data.mbar[i].to_matrix();
     let j = data.jacobian6[i];
@@ -117,15 +121,19 @@ fn six_dof_backward(
     for c in 0..6 {
         check_pivot(vi + c, l[(c, c)] * l[(c, c)], d[(c, c)])?;
     }
-    let pi = chol.solve(&u.transpose());
     let b = data.bias_acc[i].to_vector();
     let fbar = data.fbar[i].to_vector();
     let rhs = six(tau, vi) - j.tr_mul(&(mbar * b - fbar));
     let p = chol.solve(&rhs);
+    data.p6[i] = p;
+    if !propagate {
+        data.pi6[i] = Matrix6::zeros();
+        return Ok((ArticulatedInertia::zero(), Force::zero()));
+    }
+    let pi = chol.solve(&u.transpose());
     let k = mbar * (b + j * p) - fbar;
     let ia: Matrix6<f64> = mbar - u * pi;
     data.pi6[i] = pi;
-    data.p6[i] = p;
     Ok((
         ArticulatedInertia::from_matrix(&((ia + ia.transpose()) * 0.5)),
         Force::from_vector(&k),
@@ -148,7 +156,10 @@ pub fn forward_pass_2<'d>(model: &Model, data: &'d mut Data) -> &'d DVector<f64>
             }
             Joint::Fixed => ap,
             Joint::EulerZxz | Joint::Quaternion => {
-                let qdd = data.p6[i] - data.pi6[i] * ap.to_vector();
+                let qdd = match body.parent {
+                    Some(_) => data.p6[i] - data.pi6[i] * ap.to_vector(),
+                    None => data.p6[i],
+                };
                 data.ddq.rows_mut(vi, 6).copy_from(&qdd);
                 ap + Motion::from_vector(&(data.jacobian6[i] * qdd))
             }

@@ -1,7 +1,7 @@
 //! Symmetric 6x6 (articulated or composite) inertias `[A B; B^T D]` kept as 3x3 blocks.
 
-use super::{skew, Force, Motion, SpatialTransform};
-use nalgebra::{Matrix3, Matrix6};
+use super::{Force, Motion, SpatialTransform};
+use nalgebra::{Matrix3, Matrix6, Vector3};
 use std::ops::{Add, AddAssign};
 
 /// Symmetric 6x6 inertia `[ang, cross; cross^T, lin]` acting on motions, giving forces.
@@ -54,17 +54,21 @@ impl ArticulatedInertia {
     }
 
     /// Congruence transform `C^T I C` into the parent frame (the `C_j^T K_j` term of (2.69)).
+    ///
+    /// With `C = [A 0; 0 A] [E 0; -r~ E]`: rotate the three blocks (`A^T S A`, symmetric
+    /// blocks computed on one triangle), then shift by `r` with skew products (18 mults each).
     pub fn tr_transform(&self, x: &SpatialTransform) -> ArticulatedInertia {
         let a = &x.rot;
-        let ang = a.tr_mul(&(self.ang * a));
+        let ang = sym_congruence(&self.ang, a);
+        let lin = sym_congruence(&self.lin, a);
         let cross = a.tr_mul(&(self.cross * a));
-        let lin = a.tr_mul(&(self.lin * a));
-        let r = skew(&x.trans);
-        let br = cross * r;
-        let dr = lin * r;
+        let r = &x.trans;
+        let dr = mul_skew(&lin, r);
+        let br = mul_skew(&cross, r);
+        let rdr = skew_mul(r, &dr);
         ArticulatedInertia {
-            ang: ang - br - br.transpose() - r * dr,
-            cross: cross + r * lin,
+            ang: symmetrize(&(ang - br - br.transpose() - rdr)),
+            cross: cross - dr.transpose(),
             lin,
         }
     }
@@ -109,4 +113,51 @@ impl AddAssign for ArticulatedInertia {
         self.cross += o.cross;
         self.lin += o.lin;
     }
+}
+
+/// `A^T S A` for symmetric `S`, computing one triangle.
+#[inline]
+fn sym_congruence(s: &Matrix3<f64>, a: &Matrix3<f64>) -> Matrix3<f64> {
+    let t = s * a;
+    let e = |i: usize, j: usize| a.column(i).dot(&t.column(j));
+    let (m00, m01, m02, m11, m12, m22) = (e(0, 0), e(0, 1), e(0, 2), e(1, 1), e(1, 2), e(2, 2));
+    Matrix3::new(m00, m01, m02, m01, m11, m12, m02, m12, m22)
+}
+
+/// `M r~`: row `i` is `m_i x r`.
+#[inline]
+fn mul_skew(m: &Matrix3<f64>, r: &Vector3<f64>) -> Matrix3<f64> {
+    let row = |i: usize| {
+        let (x, y, z) = (m[(i, 0)], m[(i, 1)], m[(i, 2)]);
+        [y * r.z - z * r.y, z * r.x - x * r.z, x * r.y - y * r.x]
+    };
+    let (r0, r1, r2) = (row(0), row(1), row(2));
+    Matrix3::new(
+        r0[0], r0[1], r0[2], r1[0], r1[1], r1[2], r2[0], r2[1], r2[2],
+    )
+}
+
+/// `r~ M`: column `j` is `r x m_j`.
+#[inline]
+fn skew_mul(r: &Vector3<f64>, m: &Matrix3<f64>) -> Matrix3<f64> {
+    let col = |j: usize| r.cross(&m.column(j).into_owned());
+    Matrix3::from_columns(&[col(0), col(1), col(2)])
+}
+
+/// `(M + M^T) / 2`, keeping symmetric blocks exactly symmetric.
+#[inline]
+fn symmetrize(m: &Matrix3<f64>) -> Matrix3<f64> {
+    let e = |i: usize, j: usize| 0.5 * (m[(i, j)] + m[(j, i)]);
+    let (m01, m02, m12) = (e(0, 1), e(0, 2), e(1, 2));
+    Matrix3::new(
+        m[(0, 0)],
+        m01,
+        m02,
+        m01,
+        m[(1, 1)],
+        m12,
+        m02,
+        m12,
+        m[(2, 2)],
+    )
 }
