@@ -12,12 +12,14 @@
 //! - `<inertial>`: mass, CoM at the inertial origin `xyz`, and the tensor given about the CoM in
 //!   the axes rotated by the inertial origin `rpy` (`R = Rz(yaw) Ry(pitch) Rx(roll)`).
 //! - Rotational inertias with all entries below 1e-12 kg m^2 are taken as zero (with a warning).
-//! - Meshes, visuals, collisions, limits and transmissions are ignored. `<mimic>` tags are
+//! - Meshes, visuals, collisions, limits and transmissions are ignored; `<visual>`,
+//!   `<collision>` and `<material>` elements are removed before parsing (see `strip`). `<mimic>` tags are
 //!   ignored with a warning (the joints stay independent) unless [`UrdfOptions::reject_mimic`].
 //! - Bodies and coordinates follow a depth-first traversal from the root, children in file order.
 
 mod error;
 mod locate;
+mod strip;
 mod tree;
 
 pub use error::{Location, UrdfError};
@@ -71,10 +73,11 @@ pub fn load_file(path: impl AsRef<Path>, options: &UrdfOptions) -> Result<UrdfMo
 
 /// Converts URDF text; `file` labels the source in error messages.
 pub fn load_str(xml: &str, file: &str, options: &UrdfOptions) -> Result<UrdfModel, UrdfError> {
-    let robot = urdf_rs::read_from_string(xml).map_err(|e| UrdfError::Parse {
-        file: file.to_string(),
-        message: one_line(&e.to_string()),
-    })?;
+    let robot =
+        urdf_rs::read_from_string(&strip::strip_ignored(xml)).map_err(|e| UrdfError::Parse {
+            file: file.to_string(),
+            message: one_line(&e.to_string()),
+        })?;
     tree::convert(&robot, &tree::Source { xml, file }, options)
 }
 
