@@ -43,29 +43,45 @@ pub struct Timings {
 
 /// Median nanoseconds per call of `f`, after a warm-up that also sizes the batches.
 pub fn median_ns(mut f: impl FnMut()) -> f64 {
+    median_pair_ns(&mut f, &mut || {}).0
+}
+
+/// Times `f` and `f` followed by `g` in alternating batches (so both see the same machine
+/// load) and returns the medians of `f` and of the per-pair difference, i.e. the time of `g`.
+pub fn median_pair_ns(f: &mut dyn FnMut(), g: &mut dyn FnMut()) -> (f64, f64) {
     let mut reps: u32 = 1;
     let per_batch = loop {
-        let t = Instant::now();
-        for _ in 0..reps {
-            f();
-        }
-        let e = t.elapsed();
+        let e = batch(reps, f, g);
         if e >= BATCH || reps >= 1 << 24 {
             break e;
         }
         reps *= 2;
     };
-    let batches =
-        (BUDGET.as_secs_f64() / per_batch.as_secs_f64()).clamp(3.0, BATCHES as f64) as usize;
-    let mut samples: Vec<f64> = (0..batches)
+    let batches = (BUDGET.as_secs_f64() / (2.0 * per_batch.as_secs_f64()).max(1e-9))
+        .clamp(3.0, BATCHES as f64) as usize;
+    let per_call = |d: Duration| d.as_nanos() as f64 / f64::from(reps);
+    let (mut first, mut second): (Vec<f64>, Vec<f64>) = (0..batches)
         .map(|_| {
-            let t = Instant::now();
-            for _ in 0..reps {
-                f();
-            }
-            t.elapsed().as_nanos() as f64 / f64::from(reps)
+            let a = per_call(batch(reps, f, &mut || {}));
+            let ab = per_call(batch(reps, f, g));
+            (a, ab - a)
         })
-        .collect();
+        .unzip();
+    (median(&mut first), median(&mut second).max(0.0))
+}
+
+/// Wall time of `reps` repetitions of `f` followed by `g`.
+fn batch(reps: u32, f: &mut dyn FnMut(), g: &mut dyn FnMut()) -> Duration {
+    let t = Instant::now();
+    for _ in 0..reps {
+        f();
+        g();
+    }
+    t.elapsed()
+}
+
+/// Median of a non-empty sample.
+fn median(samples: &mut [f64]) -> f64 {
     samples.sort_by(f64::total_cmp);
     samples[samples.len() / 2]
 }
@@ -117,27 +133,37 @@ pub fn time_model(
 }
 
 /// Times the three passes of the O(n) algorithm separately. The backward pass accumulates into
-/// the articulated inertias that the first pass resets, so it is timed as `FW1 + BW` minus `FW1`;
-/// the second forward pass only reads the backward results and is timed alone.
+/// the articulated inertias that the first pass resets, so it is timed as the difference of
+/// `FW1 + BW` and `FW1` in alternating batches; the second forward pass only reads the backward
+/// results and is timed alone.
 fn time_passes(
     model: &Model,
     q: &DVector<f64>,
     v: &DVector<f64>,
     tau: &DVector<f64>,
 ) -> Result<(f64, f64, f64), Box<dyn std::error::Error>> {
-    let mut data = Data::new(model);
-    forward_dynamics(model, &mut data, q, v, tau, None, Algorithm::On)?;
-    let fw1 = median_ns(|| {
-        black_box(on::forward_pass_1(model, &mut data, q, v, None).is_ok());
-    });
-    let fw1_bw = median_ns(|| {
-        black_box(on::forward_pass_1(model, &mut data, q, v, None).is_ok());
-        black_box(on::backward_pass(model, &mut data, tau).is_ok());
-    });
+    let data = std::cell::RefCell::new(Data::new(model));
+    forward_dynamics(
+        model,
+        &mut data.borrow_mut(),
+        q,
+        v,
+        tau,
+        None,
+        Algorithm::On,
+    )?;
+    let (fw1, bw) = median_pair_ns(
+        &mut || {
+            black_box(on::forward_pass_1(model, &mut data.borrow_mut(), q, v, None).is_ok());
+        },
+        &mut || {
+            black_box(on::backward_pass(model, &mut data.borrow_mut(), tau).is_ok());
+        },
+    );
     let fw2 = median_ns(|| {
-        black_box(on::forward_pass_2(model, &mut data));
+        black_box(on::forward_pass_2(model, &mut data.borrow_mut()).len());
     });
-    Ok((fw1, (fw1_bw - fw1).max(0.0), fw2))
+    Ok((fw1, bw, fw2))
 }
 
 /// `biped bench dynamics --urdf/--dill`: one model.
