@@ -13,6 +13,14 @@ pub enum SsvError {
         /// The offending value.
         value: f64,
     },
+    /// A coordinate or radius beyond [`crate::primitives::MAX_MAGNITUDE`] in magnitude.
+    #[error("{what} = {value:e} exceeds the supported magnitude 1e50")]
+    OutOfRange {
+        /// Which quantity, e.g. `"vertex 1 x"` or `"radius"`.
+        what: String,
+        /// The offending value.
+        value: f64,
+    },
     /// A radius below zero.
     #[error("radius must be >= 0, got {0}")]
     NegativeRadius(f64),

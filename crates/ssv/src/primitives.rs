@@ -6,29 +6,40 @@
 use crate::error::SsvError;
 use nalgebra::{Isometry3, Point3};
 
+/// Largest accepted |coordinate| and radius: the distance formulas form products of up to four
+/// coordinates, and 1e50 keeps every such product far from overflow (robot models live in
+/// 1e-6 ... 1e6).
+pub const MAX_MAGNITUDE: f64 = 1e50;
+
+/// A finite value of magnitude at most [`MAX_MAGNITUDE`], or the error naming it.
+fn check_value(value: f64, what: impl FnOnce() -> String) -> Result<(), SsvError> {
+    if !value.is_finite() {
+        return Err(SsvError::NonFinite {
+            what: what(),
+            value,
+        });
+    }
+    if value.abs() > MAX_MAGNITUDE {
+        return Err(SsvError::OutOfRange {
+            what: what(),
+            value,
+        });
+    }
+    Ok(())
+}
+
 fn check_point(p: &Point3<f64>, what: &str) -> Result<(), SsvError> {
     for (axis, v) in ["x", "y", "z"].iter().zip(p.iter()) {
-        if !v.is_finite() {
-            return Err(SsvError::NonFinite {
-                what: format!("{what} {axis}"),
-                value: *v,
-            });
-        }
+        check_value(*v, || format!("{what} {axis}"))?;
     }
     Ok(())
 }
 
 fn check_radius(r: f64) -> Result<(), SsvError> {
-    if !r.is_finite() {
-        return Err(SsvError::NonFinite {
-            what: "radius".into(),
-            value: r,
-        });
-    }
-    if r < 0.0 {
+    if r.is_finite() && r < 0.0 {
         return Err(SsvError::NegativeRadius(r));
     }
-    Ok(())
+    check_value(r, || "radius".into())
 }
 
 /// Point-swept-sphere volume: a sphere of radius `r` about centre `p` (6.3.1).
