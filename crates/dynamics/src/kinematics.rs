@@ -91,8 +91,8 @@ pub(crate) fn add_projected_force(
         Joint::Fixed => {}
         Joint::EulerZxz | Joint::Quaternion => {
             let t = data.jacobian6[i].tr_mul(&f.to_vector());
-            for c in 0..6 {
-                out[vi + c] += t[c];
+            for (c, tc) in t.iter().enumerate() {
+                out[vi + c] += tc;
             }
         }
     }

@@ -22,5 +22,5 @@ pub use data::Data;
 pub use dynamics::{forward_dynamics, inverse_dynamics, mass_matrix, on, Algorithm};
 pub use error::{DynamicsError, ModelError};
 pub use kinematics::{forward_kinematics, update_placements};
-pub use model::{Body, BodyId, BodySpec, JointInfo, JointModel, Model, ModelBuilder};
+pub use model::{Body, BodyId, BodySpec, IndexSet, JointInfo, JointModel, Model, ModelBuilder};
 pub use spatial::{Force, Motion, RigidInertia, SpatialTransform, Wrench};

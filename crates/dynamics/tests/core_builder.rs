@@ -158,6 +158,16 @@ fn rotor_errors() {
     let model = b.build().unwrap();
     assert_eq!(model.nv(), 3);
     assert!(model.has_rotors());
+    // A rotor's index set (2.26) is its driver's: shared, not owned.
+    let bodies = model.bodies();
+    assert_eq!(
+        bodies[r].v_set().as_slice(),
+        bodies[left].v_set().as_slice()
+    );
+    assert!(!bodies[r].owns_coordinates() && bodies[left].owns_coordinates());
+    assert!(bodies[fixed].v_set().is_empty());
+    assert_eq!(bodies[0].first_child(), Some(fixed));
+    assert_eq!(bodies[fixed].brother(), Some(left));
     // O(n) reports the missing sub-system support instead of guessing.
     let mut data = Data::new(&model);
     let z = DVector::zeros(3);

@@ -44,11 +44,11 @@ pub(crate) fn crba(model: &Model, data: &mut Data) {
     }
     data.mass.fill(0.0);
     for (i, body) in model.bodies.iter().enumerate() {
-        for c in 0..body.nv_set {
-            let col = body.v_index + c;
+        let set = body.v_set.as_slice();
+        for (c, &col) in set.iter().enumerate() {
             let f = data.ic[i].apply(&column(data, i, &body.joint, c));
-            for c2 in 0..body.nv_set {
-                data.mass[(body.v_index + c2, col)] += column_dot(data, i, &body.joint, c2, &f);
+            for (c2, &row) in set.iter().enumerate() {
+                data.mass[(row, col)] += column_dot(data, i, &body.joint, c2, &f);
             }
             ancestors_column(model, data, i, col, f);
         }
@@ -62,9 +62,8 @@ fn ancestors_column(model: &Model, data: &mut Data, i: usize, col: usize, mut f:
         f = data.x[j].tr_apply_force(&f);
         j = p;
         let bj = &model.bodies[j];
-        for c2 in 0..bj.nv_set {
+        for (c2, &row) in bj.v_set.as_slice().iter().enumerate() {
             let val = column_dot(data, j, &bj.joint, c2, &f);
-            let row = bj.v_index + c2;
             data.mass[(row, col)] += val;
             data.mass[(col, row)] += val;
         }

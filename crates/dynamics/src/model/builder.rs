@@ -1,7 +1,7 @@
 //! Validating model builder: bodies are added parent-first, coordinates are assigned in order.
 
 use super::joint::{Joint, JointModel};
-use super::{Body, BodyId, JointInfo, Model};
+use super::{Body, BodyId, IndexSet, JointInfo, Model};
 use crate::spatial::{RigidInertia, SpatialTransform};
 use crate::ModelError;
 use nalgebra::{Isometry3, Unit, Vector3};
@@ -76,7 +76,12 @@ impl ModelBuilder {
         }
         let placement = checked_placement(&spec)?;
         let joint_model = checked_joint(&spec)?;
-        let (q_index, v_index, nv_set, owns) = self.index_set(&spec, &joint_model)?;
+        let (q_index, v_index, owns) = self.index_set(&spec, &joint_model)?;
+        let (nq_set, nv_set) = if owns {
+            (joint_model.nq(), joint_model.nv())
+        } else {
+            (1, 1)
+        };
         let joint = Joint::compile(&joint_model);
         let parent_chain = spec.parent.and_then(|p| self.chain_dof[p]);
         let nv = joint_model.nv();
@@ -111,7 +116,8 @@ impl ModelBuilder {
             inertia: spec.inertia,
             q_index,
             v_index,
-            nv_set,
+            q_set: IndexSet::contiguous(q_index, nq_set),
+            v_set: IndexSet::contiguous(v_index, nv_set),
             owns_coordinates: owns,
         });
         Ok(id)
@@ -192,9 +198,9 @@ impl ModelBuilder {
         &self,
         spec: &BodySpec,
         joint: &JointModel,
-    ) -> Result<(usize, usize, usize, bool), ModelError> {
+    ) -> Result<(usize, usize, bool), ModelError> {
         let JointModel::GearedRotor { driver, .. } = joint else {
-            return Ok((self.nq, self.nv, joint.nv(), true));
+            return Ok((self.nq, self.nv, true));
         };
         let bad = |reason| ModelError::BadDriver {
             body: spec.name.clone(),
@@ -214,7 +220,7 @@ impl ModelBuilder {
                 return Err(bad("driver coordinate not on the rotor's path to the root"));
             }
         }
-        Ok((d.q_index, d.v_index, 1, false))
+        Ok((d.q_index, d.v_index, false))
     }
 
     /// True if DoF `a` is DoF `b` or one of its ancestors in the DoF tree.

@@ -29,6 +29,50 @@ pub struct JointInfo {
     pub v_index: usize,
 }
 
+/// Largest index set a body can have (a quaternion free joint has 7 position coordinates).
+pub const MAX_INDEX_SET: usize = 8;
+
+/// Index set of a body into `q` or `v` (2.26): the coordinates its relative motion depends
+/// on, in the order of the columns of `J_i`; not necessarily contiguous, possibly shared with
+/// other bodies (geared rotors; later, mechanisms whose motion couples several joints).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct IndexSet {
+    idx: [usize; MAX_INDEX_SET],
+    len: usize,
+}
+
+impl IndexSet {
+    /// The set `start, start + 1, ..., start + len - 1` (`len <= MAX_INDEX_SET`).
+    pub(crate) fn contiguous(start: usize, len: usize) -> Self {
+        let mut idx = [0; MAX_INDEX_SET];
+        for (k, slot) in idx.iter_mut().take(len).enumerate() {
+            *slot = start + k;
+        }
+        Self {
+            idx,
+            len: len.min(MAX_INDEX_SET),
+        }
+    }
+
+    /// The indices in column order.
+    #[inline]
+    pub fn as_slice(&self) -> &[usize] {
+        &self.idx[..self.len]
+    }
+
+    /// Number of indices.
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// True for bodies without coordinates (fixed joints).
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+}
+
 /// One body of the model with its joint to the parent (a node of Fig. 2.7).
 #[derive(Clone, Debug)]
 pub struct Body {
@@ -45,8 +89,10 @@ pub struct Body {
     pub(crate) inertia: RigidInertia,
     pub(crate) q_index: usize,
     pub(crate) v_index: usize,
-    /// Width of the index set into `v` (shared with the driver for rotors).
-    pub(crate) nv_set: usize,
+    /// Index set into `q` (2.26).
+    pub(crate) q_set: IndexSet,
+    /// Index set into `v` (2.26), one entry per column of `J_i`.
+    pub(crate) v_set: IndexSet,
     /// Whether the body owns its index set (false for geared rotors).
     pub(crate) owns_coordinates: bool,
 }
@@ -84,17 +130,21 @@ impl Body {
     pub fn inertia(&self) -> &RigidInertia {
         &self.inertia
     }
-    /// First index of the body's index set in `q` (2.26).
+    /// First index of the body's index set in `q` (where its coordinates would start if empty).
     pub fn q_index(&self) -> usize {
         self.q_index
     }
-    /// First index of the body's index set in `v` (2.26).
+    /// First index of the body's index set in `v` (where its coordinates would start if empty).
     pub fn v_index(&self) -> usize {
         self.v_index
     }
-    /// Number of velocity coordinates the body's relative Jacobian `J_i` spans (2.35).
-    pub fn nv_set(&self) -> usize {
-        self.nv_set
+    /// Index set into `q` (2.26).
+    pub fn q_set(&self) -> &IndexSet {
+        &self.q_set
+    }
+    /// Index set into `v` (2.26): the coordinates of the columns of `J_i` (2.35).
+    pub fn v_set(&self) -> &IndexSet {
+        &self.v_set
     }
     /// False if the index set is borrowed from another body (geared rotors).
     pub fn owns_coordinates(&self) -> bool {
