@@ -306,3 +306,33 @@ fn bench_json_shapes_and_plot() {
     assert!(std::fs::read_to_string(svg).unwrap().contains("<svg"));
     assert!(String::from_utf8_lossy(&out.stderr).contains("out/dill_fd_runtime_1-2.svg"));
 }
+
+#[test]
+fn mimic_warns_by_default_and_reject_mimic_fails() {
+    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("mimic.urdf");
+    std::fs::write(
+        &path,
+        "<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"b\"><inertial><mass value=\"1\"/>\
+         <inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial></link>\n\
+         <joint name=\"j\" type=\"continuous\"><parent link=\"a\"/><child link=\"b\"/>\
+         <mimic joint=\"k\"/></joint>\n</robot>\n",
+    )
+    .unwrap();
+    let file = path.to_str().unwrap();
+    let out = run(&["model", "--urdf", file, "--json"], "");
+    assert!(out.status.success());
+    let err = String::from_utf8(out.stderr.clone()).unwrap();
+    assert!(
+        err.starts_with("warning:") && err.contains("joint \"j\""),
+        "{err}"
+    );
+    assert_eq!(json_lines(&out).remove(0)["nv"].as_u64(), Some(1));
+    let out = run(&["model", "--urdf", file, "--reject-mimic", "--json"], "");
+    assert!(!out.status.success());
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains(&format!("{file}:4: joint \"j\": mimic")),
+        "{err}"
+    );
+}

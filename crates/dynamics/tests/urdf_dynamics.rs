@@ -126,3 +126,42 @@ fn floating_base_joint_block_equals_fixed_base_mass_matrix() {
     let block = m_free.view((6, 6), (n, n));
     assert!((block - &m_fixed).amax() < 1e-12 * m_fixed.amax());
 }
+
+#[test]
+fn urdf_floating_joint_equals_floating_option() {
+    let body = chain("revolute", J2_AXIS, B_INERTIAL, "0 0 1");
+    let with_world = body.replace(
+        "<link name=\"base\"/>",
+        "<link name=\"world\"/>\n  <link name=\"base\"><inertial><mass value=\"2\"/>\
+         <inertia ixx=\"0.1\" ixy=\"0\" ixz=\"0\" iyy=\"0.2\" iyz=\"0\" izz=\"0.25\"/></inertial></link>\n  \
+         <joint name=\"free\" type=\"floating\"><parent link=\"world\"/><child link=\"base\"/></joint>",
+    );
+    let own = load(&with_world);
+    let option = load_str(
+        &with_world.replace(
+            "<link name=\"world\"/>",
+            "",
+        )
+        .replace(
+            "<joint name=\"free\" type=\"floating\"><parent link=\"world\"/><child link=\"base\"/></joint>",
+            "",
+        ),
+        "test.urdf",
+        &UrdfOptions {
+            floating: true,
+            reject_mimic: false,
+        },
+    )
+    .unwrap()
+    .model;
+    assert_eq!((own.nq(), own.nv()), (10, 9));
+    assert_eq!(own.joints()[0].name, "free");
+    assert_eq!(option.joints()[0].name, "root");
+    let mut q = own.neutral();
+    q.rows_mut(0, 7)
+        .copy_from_slice(&[0.1, 0.2, 0.3, 0.2, -0.1, 0.3, 0.9]);
+    let norm = q.rows(3, 4).norm();
+    q.rows_mut(3, 4).unscale_mut(norm);
+    q.rows_mut(7, 3).copy_from_slice(&[0.4, -0.5, 0.6]);
+    assert!((mm(&own, &q) - mm(&option, &q)).amax() < 1e-14);
+}
