@@ -56,9 +56,10 @@ pub fn backward_pass(
     check::vector("tau", tau, model.nv())?;
     for i in (0..model.nbodies()).rev() {
         let body = &model.bodies[i];
-        let (ia, k) = match &body.joint {
+        // Each arm leaves M-bar_i - U D^-1 U^T in `mbar[i]` (no longer needed) and returns k_i.
+        let k = match &body.joint {
             Joint::Revolute(ax) | Joint::Prismatic(ax) => {
-                let mbar = &data.mbar[i];
+                let mbar = &mut data.mbar[i];
                 let u = ax.apply_inertia(mbar);
                 let d = ax.dot_force(&u);
                 if d <= 0.0 || !d.is_finite() {
@@ -69,19 +70,16 @@ pub fn backward_pass(
                 }
                 let dinv = 1.0 / d;
                 let b = &data.bias_acc[i];
-                let p = dinv * (tau[body.v_index] - u.dot(b) + ax.dot_force(&data.fbar[i]));
-                let k = mbar.apply(b) + u * p - data.fbar[i];
-                let mut ia = *mbar;
-                ia.sub_outer(&u, dinv);
+                let fbar = &data.fbar[i];
+                let p = dinv * (tau[body.v_index] - u.dot(b) + ax.dot_force(fbar));
+                let k = mbar.apply(b) + u * p - *fbar;
+                mbar.sub_outer(&u, dinv);
                 data.u[i] = u;
                 data.dinv[i] = dinv;
                 data.p1[i] = p;
-                (ia, k)
+                k
             }
-            Joint::Fixed => {
-                let mbar = &data.mbar[i];
-                (*mbar, mbar.apply(&data.bias_acc[i]) - data.fbar[i])
-            }
+            Joint::Fixed => data.mbar[i].apply(&data.bias_acc[i]) - data.fbar[i],
             Joint::EulerZxz | Joint::Quaternion => {
                 six_dof_backward(data, i, body.v_index, tau, body.parent.is_some())?
             }
@@ -92,8 +90,9 @@ pub fn backward_pass(
             }
         };
         if let Some(p) = body.parent {
-            let x = data.x[i];
-            data.mbar[p] += ia.tr_transform(&x);
+            let x = &data.x[i];
+            let (head, tail) = data.mbar.split_at_mut(i);
+            tail[0].add_tr_transform_to(x, &mut head[p]);
             data.fbar[p] -= x.tr_apply_force(&k);
         }
     }
@@ -101,14 +100,15 @@ pub fn backward_pass(
 }
 
 /// Backward step of a 6-DoF joint: returns `M-bar - U D^-1 U^T` and `k_i`.
-/// A root joint (`propagate = false`) needs only `p_i`: its parent acceleration is zero.
+/// Leaves `M-bar - U D^-1 U^T` in `mbar[i]` and returns `k_i`; a root joint
+/// (`propagate = false`) needs only `p_i`, its parent acceleration being zero.
 fn six_dof_backward(
     data: &mut Data,
     i: usize,
     vi: usize,
     tau: &DVector<f64>,
     propagate: bool,
-) -> Result<(ArticulatedInertia, Force), DynamicsError> {
+) -> Result<Force, DynamicsError> {
     let mbar = data.mbar[i].to_matrix();
     let j = data.jacobian6[i];
     let u = mbar * j;
@@ -128,16 +128,14 @@ fn six_dof_backward(
     data.p6[i] = p;
     if !propagate {
         data.pi6[i] = Matrix6::zeros();
-        return Ok((ArticulatedInertia::zero(), Force::zero()));
+        return Ok(Force::zero());
     }
     let pi = chol.solve(&u.transpose());
     let k = mbar * (b + j * p) - fbar;
     let ia: Matrix6<f64> = mbar - u * pi;
     data.pi6[i] = pi;
-    Ok((
-        ArticulatedInertia::from_matrix(&((ia + ia.transpose()) * 0.5)),
-        Force::from_vector(&k),
-    ))
+    data.mbar[i] = ArticulatedInertia::from_matrix(&((ia + ia.transpose()) * 0.5));
+    Ok(Force::from_vector(&k))
 }
 
 /// Second forward recursion (Algorithm 2.4): `qddot` into `data.ddq` and body accelerations.

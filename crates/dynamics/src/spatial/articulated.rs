@@ -73,6 +73,15 @@ impl ArticulatedInertia {
         }
     }
 
+    /// `out += C^T I C` without a temporary inertia (the backward-pass accumulation (2.69)).
+    #[inline]
+    pub fn add_tr_transform_to(&self, x: &SpatialTransform, out: &mut ArticulatedInertia) {
+        let t = self.tr_transform(x);
+        out.ang += t.ang;
+        out.cross += t.cross;
+        out.lin += t.lin;
+    }
+
     /// Dense 6x6 matrix (for tests, debugging and the 6-DoF joint path).
     pub fn to_matrix(&self) -> Matrix6<f64> {
         let mut m = Matrix6::zeros();
