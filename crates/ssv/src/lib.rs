@@ -20,4 +20,4 @@ pub use result::{DistanceResult, PrimitiveParam};
 pub use format::{FormatError, LoadedModel};
 pub use model::{CollisionModel, ModelError, SegmentPair};
 pub use obb::Obb;
-pub use segment::{ClosestPair, MirrorPlane, PairDistance, Segment};
+pub use segment::{ClosestPair, MirrorPlane, PairDistance, PairQuery, Segment};

@@ -5,7 +5,7 @@ mod model_support;
 
 use biped_ssv::format;
 use biped_ssv::segment::closest_ssv_pair_brute_force;
-use biped_ssv::{CollisionModel, ModelError, PairDistance, Pss, Segment, Ssv};
+use biped_ssv::{CollisionModel, ModelError, PairDistance, PairQuery, Pss, Segment, Ssv};
 use model_support::{data_path, pose, ref_segment_distance};
 use nalgebra::{Isometry3, Point3};
 use proptest::prelude::*;
@@ -13,6 +13,7 @@ use proptest::prelude::*;
 /// Checks every pair of the last update against brute force; returns the global minimum.
 fn check_against_brute_force(model: &CollisionModel) -> Option<f64> {
     let d_a = model.activation_distance();
+    let within = model.pair_query() == PairQuery::WithinActivation;
     let mut min: Option<f64> = None;
     for (pair, result) in model.distances() {
         let (a, b) = (&model.segments()[pair.a], &model.segments()[pair.b]);
@@ -27,6 +28,7 @@ fn check_against_brute_force(model: &CollisionModel) -> Option<f64> {
                 )
             }
             PairDistance::Computed(c) => {
+                assert!(!within || c.result.distance < d_a);
                 let brute = closest_ssv_pair_brute_force(a, b);
                 assert!((c.result.distance - brute.result.distance).abs() <= 1e-12);
                 assert!(
@@ -53,6 +55,15 @@ fn humanoid_postures_equal_brute_force() {
     for (name, poses) in &loaded.poses {
         loaded.model.update(poses).unwrap();
         let min = check_against_brute_force(&loaded.model);
+        // The cheaper policy agrees on every pair closer than d_a and on the minimum.
+        let mut within = loaded.model.clone();
+        within.set_pair_query(PairQuery::WithinActivation);
+        within.update(poses).unwrap();
+        assert_eq!(check_against_brute_force(&within), min);
+        for (x, y) in within.results().iter().zip(loaded.model.results()) {
+            let close = y.distance().filter(|&d| d < within.activation_distance());
+            assert_eq!(x.distance(), close);
+        }
         let computed = loaded
             .model
             .results()
@@ -91,7 +102,11 @@ proptest! {
             })
             .collect();
         loaded.model.update(&poses).unwrap();
-        check_against_brute_force(&loaded.model);
+        let min = check_against_brute_force(&loaded.model);
+        loaded.model.set_pair_query(PairQuery::WithinActivation);
+        loaded.model.update(&poses).unwrap();
+        let close = min.filter(|&m| m < loaded.model.activation_distance());
+        prop_assert_eq!(check_against_brute_force(&loaded.model), close);
     }
 }
 

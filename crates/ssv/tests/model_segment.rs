@@ -6,9 +6,9 @@ mod model_support;
 
 use biped_ssv::segment::{
     closest_ssv_pair, closest_ssv_pair_brute_force, closest_ssv_pair_brute_force_with,
-    closest_ssv_pair_with, segment_pair_distance, SegmentError,
+    closest_ssv_pair_with, segment_pair_distance, segment_pair_query, SegmentError,
 };
-use biped_ssv::{MirrorPlane, PairDistance, Pss, Segment, Ssv};
+use biped_ssv::{MirrorPlane, PairDistance, PairQuery, Pss, Segment, Ssv};
 use model_support::{mirror_pose, pose, ref_result, ref_segment_distance, segment};
 use nalgebra::Point3;
 use proptest::prelude::*;
@@ -38,12 +38,30 @@ proptest! {
             calls.set(calls.get() + 1);
             ref_result(x, y)
         };
-        let pruned = closest_ssv_pair_with(&a, &b, counted);
+        let pruned = closest_ssv_pair_with(&a, &b, f64::INFINITY, counted).unwrap();
         let brute = closest_ssv_pair_brute_force_with(&a, &b, ref_result);
         prop_assert_eq!(pruned.result.distance, brute.result.distance);
         prop_assert!(calls.get() <= a.len() * b.len());
         let again = ref_result(&a.world_ssvs()[pruned.ssv_a], &b.world_ssvs()[pruned.ssv_b]);
         prop_assert_eq!(again.distance, pruned.result.distance);
+    }
+
+    /// Deeply interpenetrating segments (negative distances): zero interval bounds must not
+    /// prune, signed sphere bounds still may.
+    #[test]
+    fn pruned_search_exact_when_penetrating(
+        a in segment(10, 0.3, 0.2),
+        b in segment(10, 0.3, 0.2),
+        pa in pose(0.1),
+        pb in pose(0.1),
+        cutoff in prop_oneof![Just(f64::INFINITY), -0.3..0.1f64],
+    ) {
+        let (a, b) = (posed(&a, &pa), posed(&b, &pb));
+        let brute = closest_ssv_pair_brute_force_with(&a, &b, ref_result).result.distance;
+        match closest_ssv_pair_with(&a, &b, cutoff, ref_result) {
+            Some(c) => prop_assert_eq!(c.result.distance, brute),
+            None => prop_assert!(brute >= cutoff),
+        }
     }
 
     /// The same with the library's distance functions, cross-checked against the reference.
@@ -91,6 +109,33 @@ proptest! {
         // The mirrored segment's box contains its world SSVs.
         for s in ma.world_ssvs() {
             prop_assert!(ma.world_obb().contains_ssv(s, 1e-12));
+        }
+    }
+
+    /// With a cutoff, the search returns the exact closest pair iff it is below the cutoff.
+    #[test]
+    fn cutoff_search_is_exact(
+        a in segment(10, 0.4, 0.06),
+        b in segment(10, 0.4, 0.06),
+        pa in pose(0.6),
+        pb in pose(0.6),
+        cutoff in -0.1..0.4f64,
+    ) {
+        let (a, b) = (posed(&a, &pa), posed(&b, &pb));
+        let brute = closest_ssv_pair_brute_force_with(&a, &b, ref_result).result.distance;
+        match closest_ssv_pair_with(&a, &b, cutoff, ref_result) {
+            Some(c) => prop_assert_eq!(c.result.distance, brute),
+            None => prop_assert!(brute >= cutoff, "{} < {}", brute, cutoff),
+        }
+        // Same for the policy-level query with the library distance.
+        let reference = ref_segment_distance(&a, &b);
+        let d_a = cutoff.max(0.0);
+        match segment_pair_query(&a, &b, d_a, PairQuery::WithinActivation) {
+            PairDistance::Beyond => prop_assert!(reference >= d_a - 1e-9),
+            PairDistance::Computed(c) => {
+                prop_assert!(reference < d_a + 1e-9);
+                prop_assert!((c.result.distance - reference).abs() <= 1e-9);
+            }
         }
     }
 

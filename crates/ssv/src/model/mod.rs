@@ -6,7 +6,7 @@
 //! the enlarged-OBB pre-check. All buffers are allocated at construction; an update does not
 //! allocate.
 
-use crate::segment::{segment_pair_distance, ClosestPair, PairDistance, Segment};
+use crate::segment::{segment_pair_query, ClosestPair, PairDistance, PairQuery, Segment};
 use nalgebra::Isometry3;
 
 /// What can be wrong when building or updating a collision model.
@@ -67,6 +67,7 @@ pub struct CollisionModel {
     segment_body: Vec<usize>,
     pairs: Vec<SegmentPair>,
     activation_distance: f64,
+    query: PairQuery,
     in_pair: Vec<bool>,
     results: Vec<PairDistance>,
 }
@@ -86,6 +87,7 @@ impl CollisionModel {
             segment_body: Vec::new(),
             pairs: Vec::new(),
             activation_distance,
+            query: PairQuery::default(),
             in_pair: Vec::new(),
             results: Vec::new(),
         })
@@ -156,6 +158,15 @@ impl CollisionModel {
     pub fn activation_distance(&self) -> f64 {
         self.activation_distance
     }
+    /// How overlapping pairs are evaluated (default [`PairQuery::Closest`]).
+    pub fn pair_query(&self) -> PairQuery {
+        self.query
+    }
+    /// Sets how overlapping pairs are evaluated; [`PairQuery::WithinActivation`] reports
+    /// only pairs closer than `d_a` and is much cheaper when few pairs are that close.
+    pub fn set_pair_query(&mut self, query: PairQuery) {
+        self.query = query;
+    }
     /// Total number of SSVs over all segments.
     pub fn ssv_count(&self) -> usize {
         self.segments.iter().map(Segment::len).sum()
@@ -186,9 +197,10 @@ impl CollisionModel {
 
     /// Evaluates every pair at the current segment poses.
     pub fn evaluate(&mut self) {
-        let d_a = self.activation_distance;
+        let (d_a, query) = (self.activation_distance, self.query);
         for (result, pair) in self.results.iter_mut().zip(&self.pairs) {
-            *result = segment_pair_distance(&self.segments[pair.a], &self.segments[pair.b], d_a);
+            let (a, b) = (&self.segments[pair.a], &self.segments[pair.b]);
+            *result = segment_pair_query(a, b, d_a, query);
         }
     }
 

@@ -39,6 +39,12 @@ impl Obb {
         fit::fit(ssvs)
     }
 
+    /// Radius of the sphere through the corners, `|h|`.
+    #[inline]
+    pub fn circumradius(&self) -> f64 {
+        self.half_extents.norm()
+    }
+
     /// Volume of the box.
     #[inline]
     pub fn volume(&self) -> f64 {
@@ -89,10 +95,71 @@ impl Obb {
         })
     }
 
+    /// The axis-aligned bounds of `ssv` (radius included) in this box's frame, centred at
+    /// the box centre.
+    #[inline]
+    pub fn local_interval(&self, ssv: &Ssv) -> LocalInterval {
+        let mut lo = Vector3::repeat(f64::INFINITY);
+        let mut hi = Vector3::repeat(f64::NEG_INFINITY);
+        for v in ssv.vertices() {
+            let local = self.axes.tr_mul(&(v - self.center));
+            lo = lo.inf(&local);
+            hi = hi.sup(&local);
+        }
+        let r = ssv.radius();
+        LocalInterval {
+            lo: lo.add_scalar(-r),
+            hi: hi.add_scalar(r),
+        }
+    }
+
+    /// The box itself in its own frame: `[-h, h]`.
+    #[inline]
+    pub fn own_interval(&self) -> LocalInterval {
+        LocalInterval {
+            lo: -self.half_extents,
+            hi: self.half_extents,
+        }
+    }
+
+    /// Lower bound on the distance from any point of `ssv` to this box.
+    #[inline]
+    pub fn ssv_distance_lower_bound(&self, ssv: &Ssv) -> f64 {
+        self.local_interval(ssv)
+            .distance_squared(&self.own_interval())
+            .sqrt()
+    }
+
     /// Separating-axis overlap test (15 axes) of the two boxes, each enlarged by `margin`.
     #[inline]
     pub fn overlaps(&self, other: &Obb, margin: f64) -> bool {
         overlap::overlaps(self, other, margin)
+    }
+}
+
+/// An axis-aligned box `[lo, hi]` in the frame of some [`Obb`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LocalInterval {
+    /// Lower corner.
+    pub lo: Vector3<f64>,
+    /// Upper corner.
+    pub hi: Vector3<f64>,
+}
+
+impl LocalInterval {
+    /// Squared distance between two boxes of the same frame: the per-axis gaps `g_k`
+    /// combine to `sum g_k^2`, a lower bound on the squared distance between anything inside
+    /// them (points differ by at least `g_k` along each orthonormal axis). 0 if they touch.
+    #[inline]
+    pub fn distance_squared(&self, other: &LocalInterval) -> f64 {
+        let mut sum = 0.0;
+        for k in 0..3 {
+            let gap = (self.lo[k] - other.hi[k]).max(other.lo[k] - self.hi[k]);
+            if gap > 0.0 {
+                sum += gap * gap;
+            }
+        }
+        sum
     }
 }
 

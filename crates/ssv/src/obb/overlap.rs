@@ -9,12 +9,19 @@ use nalgebra::{Matrix3, Vector3};
 
 /// Added to `|r_ij|` so that degenerate cross axes never report a false separation.
 const EPS: f64 = 1e-9;
+/// sqrt(3).
+const SQRT_3: f64 = 1.732_050_807_568_877_2;
 
 /// Whether `a` and `b`, each with half extents grown by `margin`, intersect.
 #[inline]
 pub(super) fn overlaps(a: &Obb, b: &Obb, margin: f64) -> bool {
     let ha = a.half_extents.add_scalar(margin);
     let hb = b.half_extents.add_scalar(margin);
+    // Circumscribed spheres first: |h + m| <= |h| + sqrt(3) m bounds each enlarged box.
+    let reach = a.circumradius() + b.circumradius() + 2.0 * SQRT_3 * margin + EPS;
+    if (b.center - a.center).norm_squared() > reach * reach {
+        return false;
+    }
     let r = a.axes.tr_mul(&b.axes);
     let t = a.axes.tr_mul(&(b.center - a.center));
     let abs_r = r.abs().add_scalar(EPS);

@@ -6,20 +6,24 @@
 //! ([`Segment::with_mirrored_copies`]); [`Segment::version`] builds a reduced version holding
 //! a subset of the SSVs (e.g. only the inner side of a thigh, 6.8).
 
+mod bounds;
 mod mirror;
 mod pair;
 mod sphere;
+mod transform;
 
 pub use mirror::{MirrorPlane, UnknownPlane};
 pub use pair::{
     closest_ssv_pair, closest_ssv_pair_brute_force, closest_ssv_pair_brute_force_with,
-    closest_ssv_pair_with, segment_pair_distance, ClosestPair, PairDistance,
+    closest_ssv_pair_with, segment_pair_distance, segment_pair_query, ClosestPair, PairDistance,
+    PairQuery,
 };
 pub use sphere::BoundingSphere;
 
-use crate::obb::Obb;
+use crate::obb::{LocalInterval, Obb};
 use crate::primitives::Ssv;
 use nalgebra::Isometry3;
+use transform::RigidMatrix;
 
 /// What can be wrong when building a segment.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -46,6 +50,7 @@ pub struct Segment {
     ssvs: Vec<Ssv>,
     spheres: Vec<BoundingSphere>,
     obb: Obb,
+    intervals: Vec<LocalInterval>,
     world_ssvs: Vec<Ssv>,
     world_spheres: Vec<BoundingSphere>,
     world_obb: Obb,
@@ -65,8 +70,10 @@ impl Segment {
     /// A segment with a given body-frame OBB (which must contain every SSV).
     fn with_obb(name: String, ssvs: Vec<Ssv>, obb: Obb) -> Self {
         let spheres: Vec<_> = ssvs.iter().map(BoundingSphere::of_ssv).collect();
+        let intervals = ssvs.iter().map(|s| obb.local_interval(s)).collect();
         Self {
             name,
+            intervals,
             world_ssvs: ssvs.clone(),
             world_spheres: spheres.clone(),
             world_obb: obb,
@@ -100,6 +107,10 @@ impl Segment {
     pub fn obb(&self) -> &Obb {
         &self.obb
     }
+    /// Per-SSV bounds in the frame of the segment's own OBB (invariant under rigid motion).
+    pub fn ssv_intervals(&self) -> &[LocalInterval] {
+        &self.intervals
+    }
     /// The SSVs at the last pose set by [`Segment::set_pose`].
     pub fn world_ssvs(&self) -> &[Ssv] {
         &self.world_ssvs
@@ -116,11 +127,12 @@ impl Segment {
     /// Moves the segment to `pose` (body frame to world): transforms SSVs, spheres and OBB
     /// in place, without allocating.
     pub fn set_pose(&mut self, pose: &Isometry3<f64>) {
+        let m = RigidMatrix::new(pose);
         for (w, s) in self.world_ssvs.iter_mut().zip(&self.ssvs) {
             *w = s.transformed(pose);
         }
         for (w, s) in self.world_spheres.iter_mut().zip(&self.spheres) {
-            *w = s.transformed(pose);
+            w.center = m.point(&s.center);
         }
         self.world_obb = self.obb.transformed(pose);
     }

@@ -1,13 +1,11 @@
 //! Segment-pair distance query with the enlarged-OBB pre-check (6.7) and exact pruning of
-//! SSV pairs by bounding spheres.
+//! SSV pairs by cheap lower bounds (see `bounds.rs`).
 
+use super::bounds::{self, Columns};
 use super::Segment;
 use crate::distance::distance;
 use crate::primitives::Ssv;
 use crate::result::DistanceResult;
-
-/// Slack on the sphere bound so that rounding can never prune the true closest pair.
-const PRUNE_SLACK: f64 = 1e-12;
 
 /// The closest pair of SSVs between two segments.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -45,71 +43,111 @@ impl PairDistance {
     }
 }
 
-/// Segment-pair query at the current world poses (6.7): the enlarged-OBB test first, then
-/// the closest SSV pair.
+/// How a segment pair is evaluated once the enlarged OBBs overlap.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PairQuery {
+    /// Always the exact closest SSV pair (its distance may exceed `d_a`).
+    #[default]
+    Closest,
+    /// The exact closest pair only if it is closer than `d_a`; otherwise
+    /// [`PairDistance::Beyond`]. SSV pairs whose sphere bound is `>= d_a` are never evaluated,
+    /// so "beyond" then means exactly "distance >= d_a".
+    WithinActivation,
+}
+
+/// Segment-pair query at the current world poses (6.7): the OBBs enlarged by `d_a / 2`
+/// first, then the exact closest SSV pair.
 #[inline]
 pub fn segment_pair_distance(a: &Segment, b: &Segment, activation_distance: f64) -> PairDistance {
-    if !a
-        .world_obb()
-        .overlaps(b.world_obb(), 0.5 * activation_distance)
-    {
+    segment_pair_query(a, b, activation_distance, PairQuery::Closest)
+}
+
+/// Segment-pair query with an explicit [`PairQuery`] policy.
+#[inline]
+pub fn segment_pair_query(
+    a: &Segment,
+    b: &Segment,
+    activation_distance: f64,
+    query: PairQuery,
+) -> PairDistance {
+    let margin = 0.5 * activation_distance;
+    if !a.world_obb().overlaps(b.world_obb(), margin) {
         return PairDistance::Beyond;
     }
-    PairDistance::Computed(closest_ssv_pair(a, b))
+    let cutoff = match query {
+        PairQuery::Closest => f64::INFINITY,
+        PairQuery::WithinActivation => activation_distance,
+    };
+    match closest_ssv_pair_with(a, b, cutoff, distance) {
+        Some(c) => PairDistance::Computed(c),
+        None => PairDistance::Beyond,
+    }
 }
 
 /// Exact closest SSV pair, skipping pairs whose bounding-sphere lower bound cannot beat the
 /// best distance found so far. Starts from the pair with the smallest bound.
 #[inline]
 pub fn closest_ssv_pair(a: &Segment, b: &Segment) -> ClosestPair {
-    closest_ssv_pair_with(a, b, distance)
+    match closest_ssv_pair_with(a, b, f64::INFINITY, distance) {
+        Some(c) => c,
+        None => closest_ssv_pair_brute_force(a, b),
+    }
 }
 
-/// [`closest_ssv_pair`] with a caller-supplied SSV distance function (e.g. a reference
-/// solver in tests); `dist` is called only for pairs the sphere bound cannot exclude.
-pub fn closest_ssv_pair_with<F>(a: &Segment, b: &Segment, mut dist: F) -> ClosestPair
+/// The exact closest SSV pair if its distance is below `cutoff` (`None` otherwise), using
+/// the caller's SSV distance function (e.g. a reference solver in tests). `dist` is called
+/// only for pairs whose lower bounds are below both `cutoff` and the best so far.
+pub fn closest_ssv_pair_with<F>(
+    a: &Segment,
+    b: &Segment,
+    cutoff: f64,
+    mut dist: F,
+) -> Option<ClosestPair>
 where
     F: FnMut(&Ssv, &Ssv) -> DistanceResult,
 {
-    let (sa, sb) = (a.world_spheres(), b.world_spheres());
-    let (mut seed_a, mut seed_b, mut seed_lb) = (0, 0, f64::INFINITY);
-    for (i, s) in sa.iter().enumerate() {
-        for (j, t) in sb.iter().enumerate() {
-            let lb = s.distance_lower_bound(t);
-            if lb < seed_lb {
-                (seed_a, seed_b, seed_lb) = (i, j, lb);
-            }
-        }
+    let cols = Columns::new(a, b, cutoff);
+    if cols.is_empty() {
+        return None;
     }
     let (wa, wb) = (a.world_ssvs(), b.world_ssvs());
-    let mut best = ClosestPair {
-        result: dist(&wa[seed_a], &wb[seed_b]),
-        ssv_a: seed_a,
-        ssv_b: seed_b,
+    let mut best: Option<ClosestPair> = None;
+    let mut best_d = cutoff;
+    let mut consider = |i: usize, j: usize, best_d: &mut f64| {
+        let result = dist(&wa[i], &wb[j]);
+        if result.distance < *best_d {
+            *best_d = result.distance;
+            best = Some(ClosestPair {
+                result,
+                ssv_a: i,
+                ssv_b: j,
+            });
+        }
     };
-    for (i, s) in sa.iter().enumerate() {
-        for (j, t) in sb.iter().enumerate() {
-            if (i, j) == (seed_a, seed_b) || !may_beat(s, t, best.result.distance) {
+    let seed = if cutoff == f64::INFINITY {
+        bounds::seed(a, b, &cols)
+    } else {
+        None
+    };
+    if let Some((i, j)) = seed {
+        consider(i, j, &mut best_d);
+    }
+    for i in 0..wa.len() {
+        let (row, row_sq) = bounds::row(a, b, i);
+        if bounds::excludes(row_sq, best_d) {
+            continue;
+        }
+        for (j, col_sq) in cols.iter() {
+            if bounds::excludes(col_sq, best_d)
+                || seed == Some((i, j))
+                || bounds::pair_excludes(a, b, i, &row, j, best_d)
+            {
                 continue;
             }
-            let result = dist(&wa[i], &wb[j]);
-            if result.distance < best.result.distance {
-                best = ClosestPair {
-                    result,
-                    ssv_a: i,
-                    ssv_b: j,
-                };
-            }
+            consider(i, j, &mut best_d);
         }
     }
     best
-}
-
-/// Whether the sphere bound allows a distance below `best` (squared form, no sqrt).
-#[inline]
-fn may_beat(s: &super::BoundingSphere, t: &super::BoundingSphere, best: f64) -> bool {
-    let reach = best + s.radius + t.radius + PRUNE_SLACK;
-    reach > 0.0 && (t.center - s.center).norm_squared() < reach * reach
 }
 
 /// Reference: the closest SSV pair by evaluating every pair (for tests and benchmarks).
