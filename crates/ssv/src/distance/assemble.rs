@@ -11,6 +11,16 @@ use nalgebra::{Point3, Vector3};
 /// so every degeneracy test is scale invariant.
 pub(crate) const SIN2_EPS: f64 = 1e-20;
 
+/// 1/x for x > 0, else 0 (a zero-length edge then behaves as a point).
+#[inline(always)]
+pub(crate) fn inv_or_zero(x: f64) -> f64 {
+    if x > 0.0 {
+        1.0 / x
+    } else {
+        0.0
+    }
+}
+
 /// Saturation sat(x, 0, 1) of Tables 6.3/6.4; a NaN input maps to 0.
 #[inline(always)]
 pub(crate) fn clamp01(x: f64) -> f64 {
@@ -48,7 +58,7 @@ pub(crate) fn assemble(c: Closest, ra: f64, rb: f64, ga: Geom, gb: Geom) -> Dist
     let d2 = cv.norm_squared();
     let (len, n) = if d2 >= f64::MIN_POSITIVE {
         let len = d2.sqrt();
-        (len, cv / len)
+        (len, cv * (1.0 / len))
     } else {
         tiny_normal(&cv, ga, gb)
     };
@@ -86,10 +96,9 @@ pub(crate) fn scaled_unit(v: &Vector3<f64>) -> Option<(f64, Vector3<f64>)> {
     }
 }
 
-/// Index of the longest of three edge vectors (first one on ties).
-#[inline]
-pub(crate) fn longest(e: &[Vector3<f64>; 3]) -> usize {
-    let l = e.map(|x| x.norm_squared());
+/// Index of the largest of three squared edge lengths (first one on ties).
+#[inline(always)]
+pub(crate) fn longest(l: &[f64; 3]) -> usize {
     if l[0] >= l[1] && l[0] >= l[2] {
         0
     } else if l[1] >= l[2] {
@@ -133,7 +142,7 @@ fn line_direction(g: Geom) -> Option<Vector3<f64>> {
         Geom::Line(l) => l.vertices()[1] - l.vertices()[0],
         Geom::Triangle(t) => {
             let e = boundary_edges(t.vertices());
-            e[longest(&e)]
+            e[longest(&e.map(|x| x.norm_squared()))]
         }
     };
     scaled_unit(&e).map(|(_, u)| u)

@@ -1,48 +1,90 @@
 //! LL: line-swept sphere to line-swept sphere (6.4.4, Appendix B.1).
 //!
-//! Instead of the normal equations (6.31) with the parallel test (6.34) and Table 6.5, the
-//! unconstrained line parameter is computed from the components of u and w orthogonal to v
-//! (a QR-style solve of (6.28)), which is backward stable for nearly parallel lines, and the
-//! two saturation steps of Tables 6.3/6.4 follow as clamp-and-recompute. In the exactly
-//! parallel limit the first estimate is arbitrary, and the two 1-D projections that follow
-//! return an optimal pair anyway, so no parallel epsilon is needed.
+//! The unconstrained line parameter comes from the normal equations (6.31) where the
+//! scale-invariant criterion (6.34) shows them well conditioned (sin^2 > 1e-2), and otherwise
+//! from the components of u and w orthogonal to v (a QR-style solve of (6.28), backward stable
+//! for nearly parallel lines). Both branches are exact where they meet, so the threshold is
+//! not a fragile parallel epsilon. The two saturation steps of Tables 6.3/6.4 follow as
+//! clamp-and-recompute; in the exactly parallel limit the first estimate is arbitrary and
+//! these two 1-D projections return an optimal pair anyway, so Table 6.5 is not needed.
 
-use super::assemble::{assemble, clamp01, Closest, Geom};
+use super::assemble::{assemble, clamp01, inv_or_zero, Closest, Geom};
 use crate::primitives::Lss;
 use crate::result::{DistanceResult, PrimitiveParam};
 use nalgebra::{Point3, Vector3};
 
-/// Parameters (s, t) in [0, 1]^2 of the closest points of segments `p + s u` and `q + t v`
-/// (6.23); zero-length segments behave as points.
+/// Relative threshold of the scale-invariant criterion (6.34): above it the normal
+/// equations (6.31) lose at most two digits and are used; below it the orthogonalised solve.
+const WELL_CONDITIONED: f64 = 1e-2;
+
+/// A segment `p + s u` with |u|^2 and 1/|u|^2 (0 for a zero-length segment).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Seg {
+    /// Start point.
+    pub p: Point3<f64>,
+    /// Edge vector.
+    pub u: Vector3<f64>,
+    /// |u|^2.
+    pub uu: f64,
+    /// 1/|u|^2, or 0.
+    pub inv_uu: f64,
+}
+
+impl Seg {
+    /// A segment from its start point and edge vector.
+    #[inline(always)]
+    pub fn new(p: Point3<f64>, u: Vector3<f64>) -> Self {
+        let uu = u.norm_squared();
+        Self {
+            p,
+            u,
+            uu,
+            inv_uu: inv_or_zero(uu),
+        }
+    }
+}
+
+/// Parameters (s, t) in [0, 1]^2 of the closest points of segments `a.p + s a.u` and
+/// `b.p + t b.u` (6.23); zero-length segments behave as points.
 #[inline(always)]
-pub(crate) fn segment_params(
-    p: &Point3<f64>,
+pub(crate) fn segment_params(a: &Seg, b: &Seg) -> (f64, f64) {
+    let (u, v) = (&a.u, &b.u);
+    let w = b.p - a.p;
+    let (uv, uw, vw) = (u.dot(v), u.dot(&w), v.dot(&w));
+    let n = a.uu * b.uu - uv * uv;
+    let s = if n > WELL_CONDITIONED * a.uu * b.uu {
+        (b.uu * uw - uv * vw) / n
+    } else {
+        near_parallel_s(u, v, &w, uv, vw, b.inv_uu)
+    };
+    let s = clamp01(s);
+    // Step 1 (Table 6.3 analogue): best t for this s, saturated.
+    let t = clamp01((s * uv - vw) * b.inv_uu);
+    // Step 2 (Table 6.4 analogue): best s for that t, saturated.
+    let s = clamp01((uw + t * uv) * a.inv_uu);
+    (s, t)
+}
+
+/// Infinite-line parameter s of (6.28) for nearly parallel or degenerate segments, from the
+/// components of u and w orthogonal to v (QR instead of the normal equations); 0 if u is
+/// parallel to v to machine precision, where steps 1 and 2 alone give an optimal pair.
+#[inline(never)]
+fn near_parallel_s(
     u: &Vector3<f64>,
-    q: &Point3<f64>,
     v: &Vector3<f64>,
-) -> (f64, f64) {
-    let w = q - p;
-    let (uu, vv, uv) = (u.norm_squared(), v.norm_squared(), u.dot(v));
-    let (uw, vw) = (u.dot(&w), v.dot(&w));
-    let inv_vv = if vv > 0.0 { 1.0 / vv } else { 0.0 };
-    // Components orthogonal to v: the infinite-line solution of (6.28) without forming N.
+    w: &Vector3<f64>,
+    uv: f64,
+    vw: f64,
+    inv_vv: f64,
+) -> f64 {
     let u_perp = u - v * (uv * inv_vv);
     let w_perp = w - v * (vw * inv_vv);
     let den = u_perp.norm_squared();
-    let s = if den > 0.0 {
-        clamp01(u_perp.dot(&w_perp) / den)
+    if den > 0.0 {
+        u_perp.dot(&w_perp) / den
     } else {
         0.0
-    };
-    // Step 1 (Table 6.3 analogue): best t for this s, saturated.
-    let t = clamp01((s * uv - vw) * inv_vv);
-    // Step 2 (Table 6.4 analogue): best s for that t, saturated.
-    let s = if uu > 0.0 {
-        clamp01((uw + t * uv) / uu)
-    } else {
-        0.0
-    };
-    (s, t)
+    }
 }
 
 /// LL: line segment to line segment (6.4.4).
@@ -50,7 +92,7 @@ pub(crate) fn segment_params(
 pub fn ll(a: &Lss, b: &Lss) -> DistanceResult {
     let [p0, p1] = a.vertices();
     let [q0, q1] = b.vertices();
-    let (s, t) = segment_params(p0, &(p1 - p0), q0, &(q1 - q0));
+    let (s, t) = segment_params(&Seg::new(*p0, p1 - p0), &Seg::new(*q0, q1 - q0));
     let c = Closest {
         a: a.point_at(s),
         b: b.point_at(t),

@@ -8,9 +8,9 @@
 //! degenerate input can only make a candidate lose, never report a wrong distance. A flat
 //! triangle has no face candidates: it is the union of its edges (its longest edge).
 
-use super::assemble::{assemble, edge_to_tri, Closest, Geom};
-use super::line_line::segment_params;
-use super::triangle_frame::TriFrame;
+use super::assemble::{assemble, clamp01, edge_to_tri, Closest, Geom};
+use super::line_line::{segment_params, Seg};
+use super::triangle_frame::{Proj, TriFrame};
 use crate::primitives::{Lss, Tss};
 use crate::result::{DistanceResult, PrimitiveParam};
 use nalgebra::{Point3, Vector3};
@@ -30,55 +30,70 @@ pub(crate) struct SegTri {
     pub pt: Point3<f64>,
 }
 
-impl SegTri {
-    #[inline(always)]
-    fn offer(&mut self, t: f64, s: (f64, f64), pl: Point3<f64>, pt: Point3<f64>) {
-        let d2 = (pt - pl).norm_squared();
-        if d2 < self.d2 {
-            *self = Self { d2, t, s, pl, pt };
-        }
-    }
-}
-
 /// Closest pair of segment `p + t u` and the triangle of `f`.
 #[inline(always)]
 pub(crate) fn segment_triangle(p: &Point3<f64>, u: &Vector3<f64>, f: &TriFrame) -> SegTri {
-    let mut best = SegTri {
-        d2: f64::INFINITY,
-        t: 0.0,
-        s: (0.0, 0.0),
-        pl: *p,
-        pt: f.v[0],
-    };
+    let seg = Seg::new(*p, *u);
+    let (mut d2, mut kb, mut tsb) = (f64::INFINITY, 0, (0.0, 0.0));
     for k in 0..3 {
-        let (t, s) = segment_params(p, u, &f.v[k], &f.e[k]);
-        best.offer(t, edge_to_tri(k, s), p + u * t, f.v[k] + f.e[k] * s);
+        let (t, s) = segment_params(&seg, &f.edge(k));
+        let dd = ((f.v[k] - p) + f.e[k] * s - u * t).norm_squared();
+        let better = dd < d2;
+        d2 = if better { dd } else { d2 };
+        kb = if better { k } else { kb };
+        tsb = if better { (t, s) } else { tsb };
     }
+    let (t, s) = tsb;
+    let best = SegTri {
+        d2,
+        t,
+        s: edge_to_tri(kb, s),
+        pl: p + u * t,
+        pt: f.v[kb] + f.e[kb] * s,
+    };
     if f.flat {
         return best;
     }
     let q = p + u;
     let (w0, w1) = (f.project(p), f.project(&q));
-    for (t, x, w) in [(0.0, p, &w0), (1.0, &q, &w1)] {
-        if w.inside() {
-            let s = f.params(w);
-            best.offer(t, s, *x, f.point_at(s));
-        }
-    }
+    // Piercing (6.46): the end points on strictly opposite sides and the crossing inside.
     let (h0, h1) = (w0.h, w1.h);
-    if (h0 < 0.0 && h1 > 0.0) || (h0 > 0.0 && h1 < 0.0) {
-        let t = h0 / (h0 - h1);
-        let x = p + u * t;
-        let w = f.project(&x);
+    let straddle = ((h0 < 0.0) & (h1 > 0.0)) | ((h0 > 0.0) & (h1 < 0.0));
+    let tx = clamp01(h0 / (h0 - h1));
+    let x = p + u * tx;
+    let wx = f.project(&x);
+    if straddle & wx.inside() {
+        return SegTri {
+            d2: 0.0,
+            t: tx,
+            s: wx.params(),
+            pl: x,
+            pt: x,
+        };
+    }
+    // End points over the face: squared height h^2/|n|^2.
+    let face = |w: &Proj| {
         if w.inside() {
-            best = SegTri {
-                d2: 0.0,
-                t,
-                s: f.params(&w),
-                pl: x,
-                pt: x,
-            };
+            w.h * w.h * f.inv_nn
+        } else {
+            f64::INFINITY
         }
+    };
+    let (d0, d1) = (face(&w0), face(&w1));
+    let (dv, tv, w, pv) = if d1 < d0 {
+        (d1, 1.0, w1, q)
+    } else {
+        (d0, 0.0, w0, *p)
+    };
+    if dv < best.d2 {
+        let s = w.params();
+        return SegTri {
+            d2: dv,
+            t: tv,
+            s,
+            pl: pv,
+            pt: f.point_at(s),
+        };
     }
     best
 }

@@ -1,6 +1,6 @@
 //! PL: point-swept sphere to line-swept sphere, eqs. (6.13)-(6.18).
 
-use super::assemble::{assemble, clamp01, Closest, Geom};
+use super::assemble::{assemble, clamp01, inv_or_zero, Closest, Geom};
 use crate::primitives::{Lss, Pss};
 use crate::result::{DistanceResult, PrimitiveParam};
 use nalgebra::{Point3, Vector3};
@@ -9,12 +9,18 @@ use nalgebra::{Point3, Vector3};
 /// (a zero-length segment gives s* = 0, i.e. it behaves as a point).
 #[inline(always)]
 pub(crate) fn point_segment_param(p: &Point3<f64>, a: &Point3<f64>, e: &Vector3<f64>) -> f64 {
-    let ee = e.norm_squared();
-    if ee > 0.0 {
-        clamp01((p - a).dot(e) / ee)
-    } else {
-        0.0
-    }
+    point_segment_param_pre(p, a, e, inv_or_zero(e.norm_squared()))
+}
+
+/// [`point_segment_param`] with the precomputed 1/|e|^2 (0 for a zero-length segment).
+#[inline(always)]
+pub(crate) fn point_segment_param_pre(
+    p: &Point3<f64>,
+    a: &Point3<f64>,
+    e: &Vector3<f64>,
+    inv_ee: f64,
+) -> f64 {
+    clamp01((p - a).dot(e) * inv_ee)
 }
 
 /// PL: point to line segment, eqs. (6.13)-(6.17).

@@ -9,7 +9,7 @@
 //! [`TriFrame`]) has no face candidate: it is the union of its edges, i.e. its longest edge.
 
 use super::assemble::{assemble, edge_to_tri, Closest, Geom};
-use super::point_line::point_segment_param;
+use super::point_line::point_segment_param_pre;
 use super::triangle_frame::TriFrame;
 use crate::primitives::{Pss, Tss};
 use crate::result::{DistanceResult, PrimitiveParam};
@@ -18,19 +18,16 @@ use nalgebra::Point3;
 /// Triangle parameters (s0, s1) of the point of `f` closest to `p`.
 #[inline(always)]
 pub(crate) fn point_triangle_params(p: &Point3<f64>, f: &TriFrame) -> (f64, f64) {
-    if !f.flat {
-        let w = f.project(p);
-        if w.inside() {
-            return f.params(&w);
-        }
+    let w = f.project(p);
+    if !f.flat & w.inside() {
+        return w.params();
     }
     let mut best = (f64::INFINITY, (0.0, 0.0));
     for k in 0..3 {
-        let s = point_segment_param(p, &f.v[k], &f.e[k]);
+        let s = point_segment_param_pre(p, &f.v[k], &f.e[k], f.inv_ee[k]);
         let d2 = (p - (f.v[k] + f.e[k] * s)).norm_squared();
-        if d2 < best.0 {
-            best = (d2, edge_to_tri(k, s));
-        }
+        let cand = (d2, edge_to_tri(k, s));
+        best = if d2 < best.0 { cand } else { best };
     }
     best.1
 }

@@ -1,14 +1,13 @@
 //! Per-triangle precomputation shared by PT, LT and TT: the plane projection (6.21) solved by
-//! orthogonalisation against the longest edge (QR, not the normal equations), the relative
-//! flatness test and the edges.
+//! orthogonalisation (QR, not the normal equations), the relative flatness test and the edges.
 //!
-//! With E the longest edge from vertex v_k, F = v_{k+2} - v_k and F' the part of F orthogonal
-//! to E (two Gram-Schmidt passes, so F' is orthogonal to E to machine precision), a point
-//! q = p - v_k has the weight mu = q.F'/F'.F' of v_{k+2} and nu = (q.E - mu F.E)/E.E of
-//! v_{k+1}. The back substitution makes the reconstructed point backward stable even for
-//! slivers whose barycentric coordinates are ill-conditioned.
+//! With e0 = v1 - v0, e1 = v2 - v0 and F' the part of e1 orthogonal to e0 (two Gram-Schmidt
+//! passes, so F' is orthogonal to e0 to machine precision), a point q = p - v0 has
+//! s1 = q.F'/F'.F' and s0 = (q.e0 - s1 e1.e0)/e0.e0. This back substitution keeps the
+//! reconstructed point backward stable even for slivers whose parameters are ill-conditioned.
 
-use super::assemble::{boundary_edges, clamp01, longest, SIN2_EPS};
+use super::assemble::{boundary_edges, clamp01, inv_or_zero, SIN2_EPS};
+use super::line_line::Seg;
 use crate::primitives::Tss;
 use nalgebra::{Point3, Vector3};
 
@@ -17,31 +16,35 @@ use nalgebra::{Point3, Vector3};
 pub(crate) struct TriFrame {
     /// Vertices v0, v1, v2.
     pub v: [Point3<f64>; 3],
-    /// Boundary edges v_{i+1} - v_i.
+    /// Boundary edges v_{i+1} - v_i (e[0] = e0 of (6.5), e[2] = -e1).
     pub e: [Vector3<f64>; 3],
-    /// Unnormalised normal E x F (same orientation as e0 x e1 of (6.5)).
+    /// |e_i|^2 per boundary edge.
+    pub ee: [f64; 3],
+    /// 1/|e_i|^2 per boundary edge (0 for a zero-length edge).
+    pub inv_ee: [f64; 3],
+    /// Unnormalised normal e0 x F' (= e0 x e1, with rounding that only tilts it about e0).
     pub n: Vector3<f64>,
-    /// Index k of the longest edge E = e_k.
-    pub k: usize,
-    /// F' / |F'|^2: q . fp is the weight of v_{k+2}.
+    /// 1/|n|^2 (0 when flat).
+    pub inv_nn: f64,
+    /// F': the part of e1 orthogonal to e0.
     fp: Vector3<f64>,
-    /// F . E.
+    /// 1/|F'|^2 (0 when flat).
+    inv_fpfp: f64,
+    /// e1 . e0.
     fe: f64,
-    /// 1 / E.E.
-    inv_ee: f64,
-    /// The angle at v_k has sin^2 <= SIN2_EPS (includes collinear and coincident vertices):
-    /// the triangle is treated as its longest edge.
+    /// The angle at v0 has sin^2 <= SIN2_EPS (includes collinear and coincident vertices):
+    /// no face, the triangle is the union of its edges (its longest edge).
     pub flat: bool,
 }
 
-/// Plane projection of a point: weights of v_{k+2}, v_{k+1} and the scaled height n . q.
+/// Plane projection of a point: parameters (s0, s1) of (6.21) and the scaled height n . q.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Proj {
-    /// Weight of v_{k+2}.
-    pub mu: f64,
-    /// Weight of v_{k+1}.
-    pub nu: f64,
-    /// n . (p - v_k): signed height times |n|.
+    /// s0 (weight of v1).
+    pub s0: f64,
+    /// s1 (weight of v2).
+    pub s1: f64,
+    /// n . (p - v0): signed height times |n|.
     pub h: f64,
 }
 
@@ -49,7 +52,14 @@ impl Proj {
     /// True when the projection lies in the triangle, i.e. (6.6) holds.
     #[inline(always)]
     pub fn inside(&self) -> bool {
-        self.mu >= 0.0 && self.nu >= 0.0 && self.mu + self.nu <= 1.0
+        (self.s0 >= 0.0) & (self.s1 >= 0.0) & (self.s0 + self.s1 <= 1.0)
+    }
+
+    /// The parameters forced into (6.6).
+    #[inline(always)]
+    pub fn params(&self) -> (f64, f64) {
+        let s0 = clamp01(self.s0);
+        (s0, clamp01(self.s1).min(1.0 - s0))
     }
 }
 
@@ -59,62 +69,51 @@ impl TriFrame {
     pub fn new(t: &Tss) -> Self {
         let v = *t.vertices();
         let e = boundary_edges(&v);
-        let k = longest(&e);
-        let big_e = e[k];
-        let f = -e[(k + 2) % 3];
-        let ee = big_e.norm_squared();
-        let inv_ee = if ee > 0.0 { 1.0 / ee } else { 0.0 };
-        let fe = f.dot(&big_e);
-        let fp = f - big_e * (fe * inv_ee);
-        let fp = fp - big_e * (fp.dot(&big_e) * inv_ee);
+        let ee = e.map(|x| x.norm_squared());
+        let inv_ee = ee.map(inv_or_zero);
+        let e1 = v[2] - v[0];
+        let fe = e1.dot(&e[0]);
+        let fp = e1 - e[0] * (fe * inv_ee[0]);
+        let fp = fp - e[0] * (fp.dot(&e[0]) * inv_ee[0]);
         let fpfp = fp.norm_squared();
-        let flat = fpfp <= SIN2_EPS * f.norm_squared();
-        // E x F' = E x F, but with the rounding error of F' tilting it about E only.
-        let n = big_e.cross(&fp);
-        let fp = if flat { Vector3::zeros() } else { fp / fpfp };
+        let flat = fpfp * ee[0] <= SIN2_EPS * ee[0] * ee[2];
+        let inv_fpfp = if flat { 0.0 } else { 1.0 / fpfp };
         Self {
             v,
             e,
-            n,
-            k,
-            fp,
-            fe,
+            ee,
             inv_ee,
+            n: e[0].cross(&fp),
+            inv_nn: inv_fpfp * inv_ee[0],
+            fp,
+            inv_fpfp,
+            fe,
             flat,
         }
     }
 
-    /// Plane projection (6.21) of a point, in the weights of the frame.
+    /// Plane projection (6.21) of a point.
     #[inline(always)]
     pub fn project(&self, p: &Point3<f64>) -> Proj {
-        let q = p - self.v[self.k];
-        let mu = self.fp.dot(&q);
-        let nu = (self.e[self.k].dot(&q) - mu * self.fe) * self.inv_ee;
+        let q = p - self.v[0];
+        let s1 = self.fp.dot(&q) * self.inv_fpfp;
+        let s0 = (self.e[0].dot(&q) - s1 * self.fe) * self.inv_ee[0];
         Proj {
-            mu,
-            nu,
+            s0,
+            s1,
             h: self.n.dot(&q),
         }
     }
 
-    /// The point of the plane with the weights of `w`.
+    /// Boundary edge i as a segment from v_i.
     #[inline(always)]
-    pub fn point(&self, w: &Proj) -> Point3<f64> {
-        let k = self.k;
-        self.v[k] + self.e[k] * w.nu - self.e[(k + 2) % 3] * w.mu
-    }
-
-    /// Triangle parameters (s0, s1) of (6.5) of the weights `w`, forced into (6.6).
-    #[inline(always)]
-    pub fn params(&self, w: &Proj) -> (f64, f64) {
-        let rest = 1.0 - w.mu - w.nu;
-        let (s0, s1) = match self.k {
-            0 => (w.nu, w.mu),
-            1 => (rest, w.nu),
-            _ => (w.mu, rest),
-        };
-        let s0 = clamp01(s0);
-        (s0, clamp01(s1).min(1.0 - s0))
+    pub fn edge(&self, i: usize) -> Seg {
+        Seg {
+            p: self.v[i],
+            u: self.e[i],
+            uu: self.ee[i],
+            inv_uu: self.inv_ee[i],
+        }
     }
 
     /// Point (6.5) at parameters (s0, s1).

@@ -8,7 +8,7 @@
 //! have crossing edges or a vertex inside the other face. A flat triangle has no face
 //! candidates: it is the union of its edges (its longest edge).
 
-use super::assemble::{assemble, edge_to_tri, Closest, Geom};
+use super::assemble::{assemble, clamp01, edge_to_tri, Closest, Geom};
 use super::line_line::segment_params;
 use super::triangle_frame::TriFrame;
 use crate::primitives::Tss;
@@ -25,20 +25,11 @@ struct Best {
     pb: Point3<f64>,
 }
 
-impl Best {
-    #[inline(always)]
-    fn offer(&mut self, sa: (f64, f64), sb: (f64, f64), pa: Point3<f64>, pb: Point3<f64>) {
-        let d2 = (pb - pa).norm_squared();
-        if d2 < self.d2 {
-            *self = Self { d2, sa, sb, pa, pb };
-        }
-    }
-}
-
 /// Vertex-face candidates of the vertices of `a` over the face of `b` and the piercing test of
-/// the edges of `a` through `b`. `swap` tells whether `a` is the query's second triangle.
+/// the edges of `a` through `b` (`b` not flat). `swap` tells whether `a` is the query's second
+/// triangle. Candidates are selected without data-dependent branches where possible.
 #[inline(always)]
-fn vertex_face_and_piercing(a: &TriFrame, b: &TriFrame, swap: bool, best: &mut Best) {
+fn faces(a: &TriFrame, b: &TriFrame, swap: bool, best: &mut Best) {
     const VERTEX: [(f64, f64); 3] = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)];
     let w = [b.project(&a.v[0]), b.project(&a.v[1]), b.project(&a.v[2])];
     let order = |x: Best| {
@@ -54,65 +45,85 @@ fn vertex_face_and_piercing(a: &TriFrame, b: &TriFrame, swap: bool, best: &mut B
             x
         }
     };
-    for i in 0..3 {
-        if w[i].inside() {
-            let sb = b.params(&w[i]);
-            let (pa, pb) = (a.v[i], b.point_at(sb));
-            let d2 = (pb - pa).norm_squared();
-            if d2 < best.d2 {
-                *best = order(Best {
-                    d2,
-                    sa: VERTEX[i],
-                    sb,
-                    pa,
-                    pb,
-                });
-            }
-        }
-    }
+    let (mut hit, mut ih, mut th) = (false, 0, 0.0);
     for i in 0..3 {
         let (h0, h1) = (w[i].h, w[(i + 1) % 3].h);
-        if (h0 < 0.0 && h1 > 0.0) || (h0 > 0.0 && h1 < 0.0) {
-            let t = h0 / (h0 - h1);
-            let p = a.v[i] + a.e[i] * t;
-            let wp = b.project(&p);
-            if wp.inside() {
-                let (sa, sb) = (edge_to_tri(i, t), b.params(&wp));
-                *best = order(Best {
-                    d2: 0.0,
-                    sa,
-                    sb,
-                    pa: p,
-                    pb: p,
-                });
-                return;
-            }
-        }
+        let straddle = ((h0 < 0.0) & (h1 > 0.0)) | ((h0 > 0.0) & (h1 < 0.0));
+        let t = clamp01(h0 / (h0 - h1));
+        let now = straddle & b.project(&(a.v[i] + a.e[i] * t)).inside() & !hit;
+        ih = if now { i } else { ih };
+        th = if now { t } else { th };
+        hit |= now;
+    }
+    if hit {
+        let p = a.v[ih] + a.e[ih] * th;
+        let sb = b.project(&p).params();
+        *best = order(Best {
+            d2: 0.0,
+            sa: edge_to_tri(ih, th),
+            sb,
+            pa: p,
+            pb: p,
+        });
+        return;
+    }
+    let (mut dv, mut iv) = (f64::INFINITY, 0);
+    for (i, wi) in w.iter().enumerate() {
+        let d = if wi.inside() {
+            wi.h * wi.h * b.inv_nn
+        } else {
+            f64::INFINITY
+        };
+        iv = if d < dv { i } else { iv };
+        dv = dv.min(d);
+    }
+    if dv < best.d2 {
+        let sb = w[iv].params();
+        let (pa, pb) = (a.v[iv], b.point_at(sb));
+        *best = order(Best {
+            d2: dv,
+            sa: VERTEX[iv],
+            sb,
+            pa,
+            pb,
+        });
+    }
+}
+
+/// The nearest of the nine edge-edge pairs (branch-free selection of the minimum).
+#[inline(always)]
+fn edge_pairs(a: &TriFrame, b: &TriFrame) -> Best {
+    let ea = [a.edge(0), a.edge(1), a.edge(2)];
+    let eb = [b.edge(0), b.edge(1), b.edge(2)];
+    let (mut d2, mut ij, mut st) = (f64::INFINITY, 0, (0.0, 0.0));
+    for k in 0..9 {
+        let (x, y) = (&ea[k / 3], &eb[k % 3]);
+        let (s, t) = segment_params(x, y);
+        let dd = ((y.p - x.p) + y.u * t - x.u * s).norm_squared();
+        let better = dd < d2;
+        d2 = if better { dd } else { d2 };
+        ij = if better { k } else { ij };
+        st = if better { (s, t) } else { st };
+    }
+    let (i, j) = (ij / 3, ij % 3);
+    Best {
+        d2,
+        sa: edge_to_tri(i, st.0),
+        sb: edge_to_tri(j, st.1),
+        pa: a.v[i] + a.e[i] * st.0,
+        pb: b.v[j] + b.e[j] * st.1,
     }
 }
 
 /// Closest pair of two triangles; a flat triangle contributes only its edges.
 #[inline(always)]
 fn enumerate(a: &TriFrame, b: &TriFrame) -> Best {
-    let mut best = Best {
-        d2: f64::INFINITY,
-        sa: (0.0, 0.0),
-        sb: (0.0, 0.0),
-        pa: a.v[0],
-        pb: b.v[0],
-    };
-    for i in 0..3 {
-        for j in 0..3 {
-            let (s, t) = segment_params(&a.v[i], &a.e[i], &b.v[j], &b.e[j]);
-            let (pa, pb) = (a.v[i] + a.e[i] * s, b.v[j] + b.e[j] * t);
-            best.offer(edge_to_tri(i, s), edge_to_tri(j, t), pa, pb);
-        }
-    }
+    let mut best = edge_pairs(a, b);
     if !b.flat {
-        vertex_face_and_piercing(a, b, false, &mut best);
+        faces(a, b, false, &mut best);
     }
-    if !a.flat && best.d2 > 0.0 {
-        vertex_face_and_piercing(b, a, true, &mut best);
+    if !a.flat & (best.d2 > 0.0) {
+        faces(b, a, true, &mut best);
     }
     best
 }
