@@ -52,8 +52,12 @@ pub struct Data {
     pub(crate) p6: Vec<Vector6<f64>>,
     /// Net body forces of the RNEA backward pass.
     pub(crate) fnet: Vec<Force>,
-    /// Composite rigid-body inertias of CRBA.
+    /// Composite rigid-body inertias of CRBA (world axes, about body 0's origin).
     pub(crate) ic: Vec<ArticulatedInertia>,
+    /// Jacobian columns `J_i` of all bodies in world axes about body 0's origin (CRBA).
+    pub(crate) col_world: Vec<Motion>,
+    /// Offset of each body's columns in `col_world`.
+    pub(crate) col_offset: Vec<usize>,
     /// Generalized accelerations (output of forward dynamics).
     pub ddq: DVector<f64>,
     /// Generalized forces (output of inverse dynamics).
@@ -77,6 +81,10 @@ impl Data {
                 jacobian6[i] = quaternion_jacobian();
             }
         }
+        let mut col_offset = vec![0; n + 1];
+        for (i, b) in model.bodies.iter().enumerate() {
+            col_offset[i + 1] = col_offset[i] + b.v_set.len();
+        }
         Self {
             nq: model.nq(),
             nv,
@@ -98,6 +106,8 @@ impl Data {
             p6: vec![Vector6::zeros(); n],
             fnet: vec![Force::zero(); n],
             ic: vec![ArticulatedInertia::zero(); n],
+            col_world: vec![Motion::zero(); col_offset.last().copied().unwrap_or(0)],
+            col_offset: col_offset[..n].to_vec(),
             ddq: DVector::zeros(nv),
             tau: DVector::zeros(nv),
             mass: DMatrix::zeros(nv, nv),

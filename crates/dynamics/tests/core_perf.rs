@@ -58,11 +58,21 @@ fn timings() {
         .ok()
         .and_then(|s| s.parse::<usize>().ok())
     {
-        // Fixed number of O(n) calls, for instruction counting (valgrind --tool=callgrind).
+        // Fixed number of calls, for instruction counting (valgrind --tool=callgrind);
+        // BIPED_PERF_ALGO = on (default) | crba | sparse | mass | rnea.
+        let which = std::env::var("BIPED_PERF_ALGO").unwrap_or_else(|_| "on".into());
+        let algo = match which.as_str() {
+            "crba" => Algorithm::Crba,
+            "sparse" => Algorithm::Sparse,
+            _ => Algorithm::On,
+        };
         for _ in 0..n {
-            black_box(
-                forward_dynamics(&model, &mut data, &q, &v, &tau, None, Algorithm::On).unwrap(),
-            );
+            let ok = match which.as_str() {
+                "mass" => mass_matrix(&model, &mut data, &q).is_ok(),
+                "rnea" => inverse_dynamics(&model, &mut data, &q, &v, &tau, None).is_ok(),
+                _ => forward_dynamics(&model, &mut data, &q, &v, &tau, None, algo).is_ok(),
+            };
+            black_box(ok);
         }
         return;
     }

@@ -3,12 +3,16 @@
 //! Works on *joint instances*: every body with a non-empty index set contributes its columns
 //! `J_i` to the coordinates of its index set, so geared rotors sharing their driver's
 //! coordinate (3.1) are handled exactly (contributions are accumulated).
+//!
+//! Evaluated in world axes about a common point (body 0's origin): body inertias and Jacobian columns are
+//! mapped there once, so composite inertias accumulate by plain addition and every entry
+//! `M_jk = S_j . (I^c_i S_i)` of an ancestor `j` is a single 6-D dot product.
 
 use crate::model::joint::Joint;
-use crate::spatial::{Force, Motion};
+use crate::spatial::{Force, Motion, SpatialTransform};
 use crate::{Data, Model};
 
-/// Column `c` of body `i`'s relative Jacobian `J_i`.
+/// Column `c` of body `i`'s relative Jacobian `J_i` (body coordinates).
 #[inline]
 fn column(data: &Data, i: usize, joint: &Joint, c: usize) -> Motion {
     match joint {
@@ -20,50 +24,48 @@ fn column(data: &Data, i: usize, joint: &Joint, c: usize) -> Motion {
     }
 }
 
-/// `J_i[:, c]^T f`.
-#[inline]
-fn column_dot(data: &Data, i: usize, joint: &Joint, c: usize, f: &Force) -> f64 {
-    match joint {
-        Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => ax.dot_force(f),
-        Joint::Fixed => 0.0,
-        Joint::EulerZxz | Joint::Quaternion => data.jacobian6[i].column(c).dot(&f.to_vector()),
-    }
-}
-
-/// Mass matrix into `data.mass` from the transforms `C_i` already in `data`.
+/// Mass matrix into `data.mass` from the world poses already in `data`.
 pub(crate) fn crba(model: &Model, data: &mut Data) {
-    let n = model.nbodies();
     for (i, body) in model.bodies.iter().enumerate() {
-        data.ic[i] = body.inertia.to_articulated();
+        let to_world = SpatialTransform::new(data.world_rot[i].transpose(), data.world_pos[i]);
+        data.ic[i] = body
+            .inertia
+            .to_world(&data.world_rot[i], &data.world_pos[i]);
+        let offset = data.col_offset[i];
+        for c in 0..body.v_set.len() {
+            data.col_world[offset + c] =
+                to_world.inv_apply_motion(&column(data, i, &body.joint, c));
+        }
     }
-    for i in (0..n).rev() {
+    for i in (0..model.nbodies()).rev() {
         if let Some(p) = model.bodies[i].parent {
-            let add = data.ic[i].tr_transform(&data.x[i]);
-            data.ic[p] += add;
+            let (head, tail) = data.ic.split_at_mut(i);
+            head[p] += tail[0];
         }
     }
     data.mass.fill(0.0);
     for (i, body) in model.bodies.iter().enumerate() {
         let set = body.v_set.as_slice();
+        let offset = data.col_offset[i];
         for (c, &col) in set.iter().enumerate() {
-            let f = data.ic[i].apply(&column(data, i, &body.joint, c));
+            let f = data.ic[i].apply(&data.col_world[offset + c]);
             for (c2, &row) in set.iter().enumerate() {
-                data.mass[(row, col)] += column_dot(data, i, &body.joint, c2, &f);
+                data.mass[(row, col)] += data.col_world[offset + c2].dot(&f);
             }
-            ancestors_column(model, data, i, col, f);
+            ancestors_column(model, data, i, col, &f);
         }
     }
 }
 
-/// Walks from body `i` to the root, adding `J_j^T C^T ... f` to rows/columns of ancestors `j`.
-fn ancestors_column(model: &Model, data: &mut Data, i: usize, col: usize, mut f: Force) {
+/// Adds `S_j . f` to the rows/columns of every ancestor `j` of body `i` (both triangles).
+fn ancestors_column(model: &Model, data: &mut Data, i: usize, col: usize, f: &Force) {
     let mut j = i;
     while let Some(p) = model.bodies[j].parent {
-        f = data.x[j].tr_apply_force(&f);
         j = p;
         let bj = &model.bodies[j];
+        let offset = data.col_offset[j];
         for (c2, &row) in bj.v_set.as_slice().iter().enumerate() {
-            let val = column_dot(data, j, &bj.joint, c2, &f);
+            let val = data.col_world[offset + c2].dot(f);
             data.mass[(row, col)] += val;
             data.mass[(col, row)] += val;
         }

@@ -1,4 +1,4 @@
-//! In-place factorisations of the mass matrix: dense Cholesky `M = L L^T` (O(n^3)) and
+//! In-place factorisations of the mass matrix: dense Cholesky `M = U^T U` (O(n^3)) and
 //! Featherstone's reverse sparse `M = L^T L` on the DoF parent array `lambda` (thesis 2.10.1).
 
 use crate::DynamicsError;
@@ -18,45 +18,49 @@ pub(crate) fn check_pivot(index: usize, pivot: f64, original: f64) -> Result<(),
     }
 }
 
-/// Dense Cholesky `M = L L^T` in place (lower triangle of `m` becomes `L`).
+/// Dense Cholesky `M = U^T U` in place, `U` upper triangular in the upper triangle of `m`
+/// (column-major friendly: every inner product runs down two contiguous columns).
 pub(crate) fn cholesky_in_place(m: &mut DMatrix<f64>) -> Result<(), DynamicsError> {
     let n = m.nrows();
+    let a = m.as_mut_slice();
     for j in 0..n {
-        let mut d = m[(j, j)];
-        for k in 0..j {
-            d -= m[(j, k)] * m[(j, k)];
+        let (left, right) = a.split_at_mut(j * n);
+        let col_j = &mut right[..n];
+        for i in 0..j {
+            let col_i = &left[i * n..i * n + n];
+            let s = col_j[i] - dot(&col_i[..i], &col_j[..i]);
+            col_j[i] = s / col_i[i];
         }
-        check_pivot(j, d, m[(j, j)])?;
-        let l = d.sqrt();
-        m[(j, j)] = l;
-        for i in (j + 1)..n {
-            let mut s = m[(i, j)];
-            for k in 0..j {
-                s -= m[(i, k)] * m[(j, k)];
-            }
-            m[(i, j)] = s / l;
-        }
+        let d = col_j[j] - dot(&col_j[..j], &col_j[..j]);
+        check_pivot(j, d, col_j[j])?;
+        col_j[j] = d.sqrt();
     }
     Ok(())
 }
 
-/// Solves `L L^T x = b` in place with the factor of [`cholesky_in_place`].
-pub(crate) fn cholesky_solve_in_place(l: &DMatrix<f64>, b: &mut DVector<f64>) {
-    let n = l.nrows();
+/// Solves `U^T U x = b` in place with the factor of [`cholesky_in_place`].
+pub(crate) fn cholesky_solve_in_place(u: &DMatrix<f64>, b: &mut DVector<f64>) {
+    let n = u.nrows();
+    let a = u.as_slice();
+    let x = b.as_mut_slice();
     for i in 0..n {
-        let mut s = b[i];
-        for k in 0..i {
-            s -= l[(i, k)] * b[k];
-        }
-        b[i] = s / l[(i, i)];
+        let col = &a[i * n..i * n + n];
+        x[i] = (x[i] - dot(&col[..i], &x[..i])) / col[i];
     }
     for i in (0..n).rev() {
-        let mut s = b[i];
-        for k in (i + 1)..n {
-            s -= l[(k, i)] * b[k];
+        let col = &a[i * n..i * n + n];
+        x[i] /= col[i];
+        let xi = x[i];
+        for (xk, uk) in x[..i].iter_mut().zip(&col[..i]) {
+            *xk -= uk * xi;
         }
-        b[i] = s / l[(i, i)];
     }
+}
+
+/// Dot product of two equally long slices.
+#[inline]
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 /// Reverse sparse factorisation `M = L^T L` in place (lower triangle), touching only the

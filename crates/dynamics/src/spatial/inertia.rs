@@ -171,6 +171,21 @@ impl RigidInertia {
         }
     }
 
+    /// The inertia in world axes about the world origin, for a body frame with rotation `rot`
+    /// (body axes in world coordinates) and origin `pos`: `C^T M C` with `C` world-to-body.
+    #[inline]
+    pub fn to_world(&self, rot: &Matrix3<f64>, pos: &Vector3<f64>) -> ArticulatedInertia {
+        let c = rot * self.com + pos;
+        let h = c * self.mass;
+        let ic = rot * self.inertia_com * rot.transpose();
+        let s = skew(&c);
+        ArticulatedInertia {
+            ang: ic - s * s * self.mass,
+            cross: skew(&h),
+            lin: Matrix3::identity() * self.mass,
+        }
+    }
+
     /// Dense 6x6 matrix `M` of (2.22).
     pub fn to_matrix(&self) -> Matrix6<f64> {
         self.to_articulated().to_matrix()
