@@ -21,6 +21,20 @@ pub(crate) fn inv_or_zero(x: f64) -> f64 {
     }
 }
 
+/// Branch-free arg-min key of a candidate: the bits of a squared distance d2 >= 0 order like
+/// the values, so the lowest four mantissa bits (a relative 2^-48, only able to swap nearly
+/// equal candidates, whose distance is then evaluated exactly) carry the candidate index.
+#[inline(always)]
+pub(crate) fn min_key(d2: f64, k: usize) -> u64 {
+    (d2.to_bits() & !15) | k as u64
+}
+
+/// Candidate index of a key made by [`min_key`].
+#[inline(always)]
+pub(crate) fn key_index(key: u64) -> usize {
+    (key & 15) as usize
+}
+
 /// Saturation sat(x, 0, 1) of Tables 6.3/6.4; a NaN input maps to 0.
 #[inline(always)]
 pub(crate) fn clamp01(x: f64) -> f64 {

@@ -15,7 +15,7 @@ use nalgebra::{Point3, Vector3};
 
 /// Relative threshold of the scale-invariant criterion (6.34): above it the normal
 /// equations (6.31) lose at most two digits and are used; below it the orthogonalised solve.
-const WELL_CONDITIONED: f64 = 1e-2;
+pub(crate) const WELL_CONDITIONED: f64 = 1e-2;
 
 /// A segment `p + s u` with |u|^2 and 1/|u|^2 (0 for a zero-length segment).
 #[derive(Debug, Clone, Copy)]
@@ -69,7 +69,7 @@ pub(crate) fn segment_params(a: &Seg, b: &Seg) -> (f64, f64) {
 /// components of u and w orthogonal to v (QR instead of the normal equations); 0 if u is
 /// parallel to v to machine precision, where steps 1 and 2 alone give an optimal pair.
 #[inline(never)]
-fn near_parallel_s(
+pub(crate) fn near_parallel_s(
     u: &Vector3<f64>,
     v: &Vector3<f64>,
     w: &Vector3<f64>,

@@ -8,7 +8,7 @@
 //! degenerate input can only make a candidate lose, never report a wrong distance. A flat
 //! triangle has no face candidates: it is the union of its edges (its longest edge).
 
-use super::assemble::{assemble, clamp01, edge_to_tri, Closest, Geom};
+use super::assemble::{assemble, clamp01, edge_to_tri, key_index, min_key, Closest, Geom};
 use super::line_line::{segment_params, Seg};
 use super::triangle_frame::{Proj, TriFrame};
 use crate::primitives::{Lss, Tss};
@@ -34,16 +34,19 @@ pub(crate) struct SegTri {
 #[inline(always)]
 pub(crate) fn segment_triangle(p: &Point3<f64>, u: &Vector3<f64>, f: &TriFrame) -> SegTri {
     let seg = Seg::new(*p, *u);
-    let (mut d2, mut kb, mut tsb) = (f64::INFINITY, 0, (0.0, 0.0));
+    let mut ts = [(0.0, 0.0); 3];
+    let mut key = u64::MAX;
     for k in 0..3 {
-        let (t, s) = segment_params(&seg, &f.edge(k));
-        let dd = ((f.v[k] - p) + f.e[k] * s - u * t).norm_squared();
-        let better = dd < d2;
-        d2 = if better { dd } else { d2 };
-        kb = if better { k } else { kb };
-        tsb = if better { (t, s) } else { tsb };
+        ts[k] = segment_params(&seg, &f.edge(k));
+        let (t, s) = ts[k];
+        key = key.min(min_key(
+            ((f.v[k] - p) + f.e[k] * s - u * t).norm_squared(),
+            k,
+        ));
     }
-    let (t, s) = tsb;
+    let kb = key_index(key);
+    let (t, s) = ts[kb];
+    let d2 = ((f.v[kb] - p) + f.e[kb] * s - u * t).norm_squared();
     let best = SegTri {
         d2,
         t,

@@ -30,6 +30,7 @@
 //! c* = 0 exactly and the rule applies.
 
 mod assemble;
+mod edge_pairs;
 mod line_line;
 mod line_triangle;
 mod point_line;

@@ -8,7 +8,7 @@
 //! which is exact whatever region the rounded projection reports. A flat triangle (see
 //! [`TriFrame`]) has no face candidate: it is the union of its edges, i.e. its longest edge.
 
-use super::assemble::{assemble, edge_to_tri, Closest, Geom};
+use super::assemble::{assemble, edge_to_tri, key_index, min_key, Closest, Geom};
 use super::point_line::point_segment_param_pre;
 use super::triangle_frame::TriFrame;
 use crate::primitives::{Pss, Tss};
@@ -22,14 +22,14 @@ pub(crate) fn point_triangle_params(p: &Point3<f64>, f: &TriFrame) -> (f64, f64)
     if !f.flat & w.inside() {
         return w.params();
     }
-    let mut best = (f64::INFINITY, (0.0, 0.0));
+    let mut s = [0.0; 3];
+    let mut key = u64::MAX;
     for k in 0..3 {
-        let s = point_segment_param_pre(p, &f.v[k], &f.e[k], f.inv_ee[k]);
-        let d2 = (p - (f.v[k] + f.e[k] * s)).norm_squared();
-        let cand = (d2, edge_to_tri(k, s));
-        best = if d2 < best.0 { cand } else { best };
+        s[k] = point_segment_param_pre(p, &f.v[k], &f.e[k], f.inv_ee[k]);
+        key = key.min(min_key((p - (f.v[k] + f.e[k] * s[k])).norm_squared(), k));
     }
-    best.1
+    let k = key_index(key);
+    edge_to_tri(k, s[k])
 }
 
 /// PT: point to triangle, (6.19)-(6.22) and Table 6.2.

@@ -9,7 +9,7 @@
 //! candidates: it is the union of its edges (its longest edge).
 
 use super::assemble::{assemble, clamp01, edge_to_tri, Closest, Geom};
-use super::line_line::segment_params;
+use super::edge_pairs::nearest_edge_pair;
 use super::triangle_frame::TriFrame;
 use crate::primitives::Tss;
 use crate::result::{DistanceResult, PrimitiveParam};
@@ -93,18 +93,8 @@ fn faces(a: &TriFrame, b: &TriFrame, swap: bool, best: &mut Best) {
 /// The nearest of the nine edge-edge pairs (branch-free selection of the minimum).
 #[inline(always)]
 fn edge_pairs(a: &TriFrame, b: &TriFrame) -> Best {
-    let ea = [a.edge(0), a.edge(1), a.edge(2)];
-    let eb = [b.edge(0), b.edge(1), b.edge(2)];
-    let (mut d2, mut ij, mut st) = (f64::INFINITY, 0, (0.0, 0.0));
-    for k in 0..9 {
-        let (x, y) = (&ea[k / 3], &eb[k % 3]);
-        let (s, t) = segment_params(x, y);
-        let dd = ((y.p - x.p) + y.u * t - x.u * s).norm_squared();
-        let better = dd < d2;
-        d2 = if better { dd } else { d2 };
-        ij = if better { k } else { ij };
-        st = if better { (s, t) } else { st };
-    }
+    let (d2, ij, s, t) = nearest_edge_pair(a, b);
+    let st = (s, t);
     let (i, j) = (ij / 3, ij % 3);
     Best {
         d2,
