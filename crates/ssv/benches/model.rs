@@ -1,16 +1,21 @@
 //! Whole-model update of the example humanoid (`data/humanoid.toml`): transform every SSV,
 //! OBB and bounding sphere to the body poses and evaluate all segment pairs (thesis 6.5, 6.7),
 //! in the standing posture and with the arms close to the thighs. Also the parts (transform
-//! only) and an unpruned baseline (OBB test, then every SSV pair) for comparison.
+//! only) and an unpruned baseline (OBB test, then every SSV pair) for comparison. Both pair
+//! policies are measured: `closest` (exact closest pair whenever the enlarged OBBs overlap)
+//! and `within_da` (exact closest pair only when it is closer than d_a).
 
 use biped_ssv::format;
 use biped_ssv::segment::closest_ssv_pair_brute_force;
-use biped_ssv::{CollisionModel, PairDistance};
+use biped_ssv::{CollisionModel, PairDistance, PairQuery};
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::Isometry3;
 use std::hint::black_box;
 
-fn humanoid() -> (CollisionModel, Vec<(String, Vec<Isometry3<f64>>)>) {
+/// Named postures: one pose per body.
+type Postures = Vec<(String, Vec<Isometry3<f64>>)>;
+
+fn humanoid() -> (CollisionModel, Postures) {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/humanoid.toml");
     let loaded = format::load(path).unwrap_or_else(|e| panic!("{e}"));
     (loaded.model, loaded.poses.into_iter().collect())
@@ -32,8 +37,13 @@ fn unpruned(model: &CollisionModel) -> f64 {
 fn bench_model(c: &mut Criterion) {
     let (mut model, postures) = humanoid();
     for (name, poses) in &postures {
+        model.set_pair_query(PairQuery::Closest);
         model.update(poses).unwrap();
-        let computed = model.results().iter().filter(|r| r.computed().is_some()).count();
+        let computed = model
+            .results()
+            .iter()
+            .filter(|r| r.computed().is_some())
+            .count();
         let min = model.min_distance().map(|(_, p)| p.result.distance);
         eprintln!(
             "{name}: {} segments, {} SSVs, {} pairs, {computed} pairs computed, min {min:?}",
@@ -41,12 +51,24 @@ fn bench_model(c: &mut Criterion) {
             model.ssv_count(),
             model.pairs().len()
         );
-        c.bench_function(&format!("model_update/{name}"), |b| {
-            b.iter(|| {
-                model.update(black_box(poses)).unwrap();
-                black_box(model.results().first().copied().unwrap_or(PairDistance::Beyond))
-            })
-        });
+        for (label, query) in [
+            ("closest", PairQuery::Closest),
+            ("within_da", PairQuery::WithinActivation),
+        ] {
+            model.set_pair_query(query);
+            c.bench_function(&format!("model_update/{name}/{label}"), |b| {
+                b.iter(|| {
+                    model.update(black_box(poses)).unwrap();
+                    black_box(
+                        model
+                            .results()
+                            .first()
+                            .copied()
+                            .unwrap_or(PairDistance::Beyond),
+                    )
+                })
+            });
+        }
         c.bench_function(&format!("model_transform_only/{name}"), |b| {
             b.iter(|| model.set_poses(black_box(poses)).unwrap())
         });

@@ -164,7 +164,7 @@ fn toml_field(mut err: toml::de::Error, message: &str) -> String {
         .lines()
         .filter_map(|l| l.strip_prefix("in `"))
         .filter_map(|l| l.strip_suffix('`'))
-        .last()
+        .next_back()
         .unwrap_or("")
         .to_string();
     for prefix in ["missing field `", "unknown field `"] {

@@ -3,8 +3,9 @@
 //!
 //! [`CollisionModel::update`] takes the body poses, moves every segment that takes part in a
 //! pair (each SSV is transformed once per update, not per pair) and evaluates every pair with
-//! the enlarged-OBB pre-check. All buffers are allocated at construction; an update does not
-//! allocate.
+//! the enlarged-OBB pre-check and the exact, pruned closest-pair search; [`PairQuery`]
+//! chooses whether pairs farther than `d_a` still report their closest pair. All buffers are
+//! allocated at construction; an update does not allocate.
 
 use crate::segment::{segment_pair_query, ClosestPair, PairDistance, PairQuery, Segment};
 use nalgebra::Isometry3;

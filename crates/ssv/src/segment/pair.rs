@@ -21,9 +21,10 @@ pub struct ClosestPair {
 /// Outcome of a segment-pair query.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum PairDistance {
-    /// The OBBs enlarged by `d_a / 2` do not overlap: the distance is at least `d_a`.
+    /// The distance is at least `d_a`: the OBBs enlarged by `d_a / 2` do not overlap, or
+    /// (with [`PairQuery::WithinActivation`]) no SSV pair is closer than `d_a`.
     Beyond,
-    /// The boxes overlap: the exact closest SSV pair (its distance may still exceed `d_a`).
+    /// The exact closest SSV pair (with [`PairQuery::Closest`] its distance may exceed `d_a`).
     Computed(ClosestPair),
 }
 
@@ -84,8 +85,8 @@ pub fn segment_pair_query(
     }
 }
 
-/// Exact closest SSV pair, skipping pairs whose bounding-sphere lower bound cannot beat the
-/// best distance found so far. Starts from the pair with the smallest bound.
+/// Exact closest SSV pair, skipping SSV pairs whose cheap lower bounds (box-frame intervals,
+/// bounding spheres) cannot beat the best distance found so far.
 #[inline]
 pub fn closest_ssv_pair(a: &Segment, b: &Segment) -> ClosestPair {
     match closest_ssv_pair_with(a, b, f64::INFINITY, distance) {
@@ -164,7 +165,11 @@ where
     for (i, x) in a.world_ssvs().iter().enumerate() {
         for (j, y) in b.world_ssvs().iter().enumerate() {
             let result = dist(x, y);
-            if best.map_or(true, |c| result.distance < c.result.distance) {
+            let better = match &best {
+                None => true,
+                Some(c) => result.distance < c.result.distance,
+            };
+            if better {
                 best = Some(ClosestPair {
                     result,
                     ssv_a: i,
