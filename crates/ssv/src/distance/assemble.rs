@@ -35,10 +35,16 @@ pub(crate) fn key_index(key: u64) -> usize {
     (key & 15) as usize
 }
 
-/// Saturation sat(x, 0, 1) of Tables 6.3/6.4; a NaN input maps to 0.
+/// Saturation sat(x, 0, 1) of Tables 6.3/6.4; a NaN input maps to 0 (every comparison with
+/// NaN is false), and the two selects map to single min/max instructions.
 #[inline(always)]
 pub(crate) fn clamp01(x: f64) -> f64 {
-    x.max(0.0).min(1.0)
+    let x = if x > 0.0 { x } else { 0.0 };
+    if x < 1.0 {
+        x
+    } else {
+        1.0
+    }
 }
 
 /// Closest points p*_0, p*_1 (6.9) on the two underlying primitives and their parameters.

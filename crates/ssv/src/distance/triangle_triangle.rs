@@ -10,7 +10,7 @@
 
 use super::assemble::{assemble, clamp01, edge_to_tri, Closest, Geom};
 use super::edge_pairs::nearest_edge_pair;
-use super::triangle_frame::TriFrame;
+use super::triangle_frame::{Proj, TriFrame};
 use crate::primitives::Tss;
 use crate::result::{DistanceResult, PrimitiveParam};
 use nalgebra::Point3;
@@ -25,48 +25,64 @@ struct Best {
     pb: Point3<f64>,
 }
 
-/// Vertex-face candidates of the vertices of `a` over the face of `b` and the piercing test of
-/// the edges of `a` through `b` (`b` not flat). `swap` tells whether `a` is the query's second
-/// triangle. Candidates are selected without data-dependent branches where possible.
+/// Projections (6.21) of the three vertices of `a` onto the plane of `b`.
 #[inline(always)]
-fn faces(a: &TriFrame, b: &TriFrame, swap: bool, best: &mut Best) {
-    const VERTEX: [(f64, f64); 3] = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)];
-    let w = [b.project(&a.v[0]), b.project(&a.v[1]), b.project(&a.v[2])];
-    let order = |x: Best| {
-        if swap {
-            Best {
-                sa: x.sb,
-                sb: x.sa,
-                pa: x.pb,
-                pb: x.pa,
-                ..x
-            }
-        } else {
-            x
+fn project_vertices(a: &TriFrame, b: &TriFrame) -> [Proj; 3] {
+    [b.project(&a.v[0]), b.project(&a.v[1]), b.project(&a.v[2])]
+}
+
+/// True when the vertices lie strictly on both sides of the plane.
+#[inline(always)]
+fn straddles(w: &[Proj; 3]) -> bool {
+    let pos = (w[0].h > 0.0) | (w[1].h > 0.0) | (w[2].h > 0.0);
+    let neg = (w[0].h < 0.0) | (w[1].h < 0.0) | (w[2].h < 0.0);
+    pos & neg
+}
+
+/// Puts a candidate of the pair (a, b) into query order.
+#[inline(always)]
+fn order(x: Best, swap: bool) -> Best {
+    if swap {
+        Best {
+            sa: x.sb,
+            sb: x.sa,
+            pa: x.pb,
+            pb: x.pa,
+            ..x
         }
-    };
-    let (mut hit, mut ih, mut th) = (false, 0, 0.0);
+    } else {
+        x
+    }
+}
+
+/// The first edge of `a` piercing the (non-flat) triangle `b` (6.46): c* = 0 at that point.
+#[inline(always)]
+fn piercing(a: &TriFrame, b: &TriFrame, w: &[Proj; 3], swap: bool) -> Option<Best> {
     for i in 0..3 {
         let (h0, h1) = (w[i].h, w[(i + 1) % 3].h);
-        let straddle = ((h0 < 0.0) & (h1 > 0.0)) | ((h0 > 0.0) & (h1 < 0.0));
-        let t = clamp01(h0 / (h0 - h1));
-        let now = straddle & b.project(&(a.v[i] + a.e[i] * t)).inside() & !hit;
-        ih = if now { i } else { ih };
-        th = if now { t } else { th };
-        hit |= now;
+        if ((h0 < 0.0) & (h1 > 0.0)) | ((h0 > 0.0) & (h1 < 0.0)) {
+            let t = clamp01(h0 / (h0 - h1));
+            let p = a.v[i] + a.e[i] * t;
+            let wp = b.project(&p);
+            if wp.inside() {
+                let x = Best {
+                    d2: 0.0,
+                    sa: edge_to_tri(i, t),
+                    sb: wp.params(),
+                    pa: p,
+                    pb: p,
+                };
+                return Some(order(x, swap));
+            }
+        }
     }
-    if hit {
-        let p = a.v[ih] + a.e[ih] * th;
-        let sb = b.project(&p).params();
-        *best = order(Best {
-            d2: 0.0,
-            sa: edge_to_tri(ih, th),
-            sb,
-            pa: p,
-            pb: p,
-        });
-        return;
-    }
+    None
+}
+
+/// The vertex-face candidates of the vertices of `a` over the (non-flat) face of `b`.
+#[inline(always)]
+fn vertex_face(a: &TriFrame, b: &TriFrame, w: &[Proj; 3], swap: bool, best: &mut Best) {
+    const VERTEX: [(f64, f64); 3] = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)];
     let (mut dv, mut iv) = (f64::INFINITY, 0);
     for (i, wi) in w.iter().enumerate() {
         let d = if wi.inside() {
@@ -79,14 +95,14 @@ fn faces(a: &TriFrame, b: &TriFrame, swap: bool, best: &mut Best) {
     }
     if dv < best.d2 {
         let sb = w[iv].params();
-        let (pa, pb) = (a.v[iv], b.point_at(sb));
-        *best = order(Best {
+        let x = Best {
             d2: dv,
             sa: VERTEX[iv],
             sb,
-            pa,
-            pb,
-        });
+            pa: a.v[iv],
+            pb: b.point_at(sb),
+        };
+        *best = order(x, swap);
     }
 }
 
@@ -109,11 +125,25 @@ fn edge_pairs(a: &TriFrame, b: &TriFrame) -> Best {
 #[inline(always)]
 fn enumerate(a: &TriFrame, b: &TriFrame) -> Best {
     let mut best = edge_pairs(a, b);
-    if !b.flat {
-        faces(a, b, false, &mut best);
+    let (wa, wb) = (project_vertices(a, b), project_vertices(b, a));
+    // Non-coplanar triangles can only intersect if each straddles the other's plane (a flat
+    // triangle, i.e. a segment, only has to straddle).
+    let (sa, sb) = (!b.flat & straddles(&wa), !a.flat & straddles(&wb));
+    if sa & (sb | a.flat) {
+        if let Some(x) = piercing(a, b, &wa, false) {
+            return x;
+        }
     }
-    if !a.flat & (best.d2 > 0.0) {
-        faces(b, a, true, &mut best);
+    if sb & (sa | b.flat) {
+        if let Some(x) = piercing(b, a, &wb, true) {
+            return x;
+        }
+    }
+    if !b.flat {
+        vertex_face(a, b, &wa, false, &mut best);
+    }
+    if !a.flat {
+        vertex_face(b, a, &wb, true, &mut best);
     }
     best
 }
