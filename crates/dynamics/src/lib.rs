@@ -6,10 +6,12 @@
 //! CRBA + dense Cholesky, or CRBA + reverse sparse `L^T L`; inverse dynamics by RNEA.
 
 mod check;
+pub mod centroidal;
 pub mod configuration;
 pub mod data;
 pub mod dynamics;
 pub mod error;
+pub mod jacobian;
 pub mod kinematics;
 pub mod model;
 pub mod spatial;
@@ -17,10 +19,12 @@ pub mod spatial;
 pub mod dill;
 pub mod urdf;
 
+pub use centroidal::{center_of_mass, CenterOfMass, Centroidal};
 pub use configuration::{difference, integrate};
 pub use data::Data;
 pub use dynamics::{forward_dynamics, inverse_dynamics, mass_matrix, on, Algorithm};
 pub use error::{DynamicsError, ModelError};
+pub use jacobian::{JacobianError, JacobianFrame, Jacobians};
 pub use kinematics::{forward_kinematics, update_placements};
 pub use model::{Body, BodyId, BodySpec, IndexSet, JointInfo, JointModel, Model, ModelBuilder};
 pub use spatial::{Force, Motion, RigidInertia, SpatialTransform, Wrench};
