@@ -9,6 +9,7 @@ use nalgebra::Vector3;
 
 /// Nearest edge pair: squared distance, pair index 3 i + j and parameters (s, t) on edge i of
 /// `a` and edge j of `b`.
+#[allow(clippy::needless_range_loop)] // lane loops over parallel arrays
 #[inline(always)]
 pub(crate) fn nearest_edge_pair(a: &TriFrame, b: &TriFrame) -> (f64, usize, f64, f64) {
     let mut w = [[0.0; 9]; 3];
@@ -33,7 +34,8 @@ pub(crate) fn nearest_edge_pair(a: &TriFrame, b: &TriFrame) -> (f64, usize, f64,
         (uv[k], uw[k], vw[k]) = (dot(&u, &v, k), dot(&u, &w, k), dot(&v, &w, k));
         let n = uu[k] * vv[k] - uv[k] * uv[k];
         s0[k] = (vv[k] * uw[k] - uv[k] * vw[k]) / n;
-        ill[k] = !(n > WELL_CONDITIONED * uu[k] * vv[k]);
+        let well = n > WELL_CONDITIONED * uu[k] * vv[k];
+        ill[k] = !well;
     }
     for k in 0..9 {
         if ill[k] {

@@ -87,15 +87,42 @@ pub(crate) fn near_parallel_s(
     }
 }
 
+/// [`segment_params`] for two fresh segments: in the well-conditioned case the three
+/// reciprocals 1/|u|^2, 1/|v|^2 and 1/N share a single division.
+#[inline(always)]
+fn fresh_segment_params(
+    p: &Point3<f64>,
+    u: &Vector3<f64>,
+    q: &Point3<f64>,
+    v: &Vector3<f64>,
+) -> (f64, f64) {
+    let w = q - p;
+    let (uu, vv) = (u.norm_squared(), v.norm_squared());
+    let (uv, uw, vw) = (u.dot(v), u.dot(&w), v.dot(&w));
+    let n = uu * vv - uv * uv;
+    let uuvv = uu * vv;
+    let prod = uuvv * n;
+    if (n > WELL_CONDITIONED * uuvv) & (f64::MIN_POSITIVE..f64::INFINITY).contains(&prod) {
+        let r = 1.0 / prod;
+        let (inv_n, inv_uu, inv_vv) = (uuvv * r, vv * n * r, uu * n * r);
+        let s = clamp01((vv * uw - uv * vw) * inv_n);
+        let t = clamp01((s * uv - vw) * inv_vv);
+        (clamp01((uw + t * uv) * inv_uu), t)
+    } else {
+        segment_params(&Seg::new(*p, *u), &Seg::new(*q, *v))
+    }
+}
+
 /// LL: line segment to line segment (6.4.4).
 #[inline]
 pub fn ll(a: &Lss, b: &Lss) -> DistanceResult {
     let [p0, p1] = a.vertices();
     let [q0, q1] = b.vertices();
-    let (s, t) = segment_params(&Seg::new(*p0, p1 - p0), &Seg::new(*q0, q1 - q0));
+    let (u, v) = (p1 - p0, q1 - q0);
+    let (s, t) = fresh_segment_params(p0, &u, q0, &v);
     let c = Closest {
-        a: a.point_at(s),
-        b: b.point_at(t),
+        a: p0 + u * s,
+        b: q0 + v * t,
         param_a: PrimitiveParam::Line(s),
         param_b: PrimitiveParam::Line(t),
     };

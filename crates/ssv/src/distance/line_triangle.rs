@@ -36,9 +36,9 @@ pub(crate) fn segment_triangle(p: &Point3<f64>, u: &Vector3<f64>, f: &TriFrame) 
     let seg = Seg::new(*p, *u);
     let mut ts = [(0.0, 0.0); 3];
     let mut key = u64::MAX;
-    for k in 0..3 {
-        ts[k] = segment_params(&seg, &f.edge(k));
-        let (t, s) = ts[k];
+    for (k, tsk) in ts.iter_mut().enumerate() {
+        *tsk = segment_params(&seg, &f.edge(k));
+        let (t, s) = *tsk;
         key = key.min(min_key(
             ((f.v[k] - p) + f.e[k] * s - u * t).norm_squared(),
             k,

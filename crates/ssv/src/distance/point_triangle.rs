@@ -24,9 +24,9 @@ pub(crate) fn point_triangle_params(p: &Point3<f64>, f: &TriFrame) -> (f64, f64)
     }
     let mut s = [0.0; 3];
     let mut key = u64::MAX;
-    for k in 0..3 {
-        s[k] = point_segment_param_pre(p, &f.v[k], &f.e[k], f.inv_ee[k]);
-        key = key.min(min_key((p - (f.v[k] + f.e[k] * s[k])).norm_squared(), k));
+    for (k, sk) in s.iter_mut().enumerate() {
+        *sk = point_segment_param_pre(p, &f.v[k], &f.e[k], f.inv_ee[k]);
+        key = key.min(min_key((p - (f.v[k] + f.e[k] * *sk)).norm_squared(), k));
     }
     let k = key_index(key);
     edge_to_tri(k, s[k])
