@@ -66,3 +66,66 @@ pub fn distance(a: &Ssv, b: &Ssv) -> DistanceResult {
         (Ssv::Triangle(a), Ssv::Triangle(b)) => tt(a, b),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::testkit::*;
+    use super::*;
+    use crate::primitives::{Lss, Pss, Tss};
+    use nalgebra::Point3;
+    use rand::Rng;
+
+    /// All nine pair types on a coarse lattice (many coincident, collinear and coplanar
+    /// vertices) at scales 1e-6, 1 and 1e6: finite, certified results and swap symmetry.
+    #[test]
+    fn lattice_degeneracies_all_pair_types() {
+        let mut rng = rng(99);
+        for &scale in &[1e-6, 1.0, 1e6] {
+            let mut pick = |rng: &mut rand::rngs::StdRng| {
+                let c = |rng: &mut rand::rngs::StdRng| rng.random_range(0..3) as f64 * scale;
+                Point3::new(c(rng), c(rng), c(rng))
+            };
+            for _ in 0..3000 {
+                let mut make = |kind: u32, rng: &mut rand::rngs::StdRng| -> Ssv {
+                    let r = rng.random_range(0..2) as f64 * 0.1 * scale;
+                    match kind {
+                        0 => Pss::new(pick(rng), r).unwrap().into(),
+                        1 => Lss::new(pick(rng), pick(rng), r).unwrap().into(),
+                        _ => Tss::new(pick(rng), pick(rng), pick(rng), r).unwrap().into(),
+                    }
+                };
+                let (ka, kb) = (rng.random_range(0..3), rng.random_range(0..3));
+                let (a, b) = (make(ka, &mut rng), make(kb, &mut rng));
+                let r = distance(&a, &b);
+                let all = [
+                    r.distance,
+                    r.normal.x,
+                    r.normal.y,
+                    r.normal.z,
+                    r.point_a.x,
+                    r.point_b.z,
+                ];
+                assert!(all.iter().all(|x| x.is_finite()), "{a:?} {b:?} {r:?}");
+                check_result(&r, &a, &b, scale_of(&a, &b).max(scale));
+                let brute = brute_force(&a, &b, 24);
+                assert!(
+                    r.distance <= brute + 1e-12 * scale,
+                    "{a:?} {b:?} {r:?} {brute}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn normal_rule_for_a_segment_through_a_flat_triangle() {
+        // Flat triangle along x (longest edge), segment along y crossing it: unit(e_a x e_b).
+        let flat = tss([0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [1.0, 0.0, 0.0], 0.0);
+        let seg = lss([1.5, -1.0, 0.0], [1.5, 1.0, 0.0], 0.0);
+        let r = lt(&seg, &flat);
+        assert_eq!(r.c_star().norm(), 0.0);
+        // e_a = +y, e_b = longest edge v2 - v1... = (v0 - v2) direction or (v1 - v0): +-x.
+        assert!((r.normal.z.abs() - 1.0).abs() < 1e-15, "{r:?}");
+        let again = lt(&seg, &flat);
+        assert_eq!(again, r);
+    }
+}
