@@ -197,3 +197,28 @@ fn segment_errors() {
     assert!(matches!(seg.version("v", &[]), Err(SegmentError::Empty(_))));
     assert!("xw".parse::<MirrorPlane>().is_err());
 }
+
+/// Segments beyond the per-query column cache (more than 64 SSVs) stay exact.
+#[test]
+fn large_segments_equal_brute_force() {
+    use model_support::ssv;
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::TestRunner;
+    let mut runner = TestRunner::deterministic();
+    let many = proptest::collection::vec(ssv(0.5, 0.05), 70..=80);
+    for _ in 0..20 {
+        let a = Segment::new("a", many.new_tree(&mut runner).unwrap().current()).unwrap();
+        let b = Segment::new("b", many.new_tree(&mut runner).unwrap().current()).unwrap();
+        let pb = pose(0.8).new_tree(&mut runner).unwrap().current();
+        let (a, b) = (posed(&a, &nalgebra::Isometry3::identity()), posed(&b, &pb));
+        let brute = closest_ssv_pair_brute_force_with(&a, &b, ref_result)
+            .result
+            .distance;
+        for cutoff in [f64::INFINITY, 0.05, brute + 1e-3] {
+            match closest_ssv_pair_with(&a, &b, cutoff, ref_result) {
+                Some(c) => assert_eq!(c.result.distance, brute),
+                None => assert!(brute >= cutoff),
+            }
+        }
+    }
+}
