@@ -81,12 +81,12 @@ mod tests {
     fn lattice_degeneracies_all_pair_types() {
         let mut rng = rng(99);
         for &scale in &[1e-6, 1.0, 1e6] {
-            let mut pick = |rng: &mut rand::rngs::StdRng| {
+            let pick = |rng: &mut rand::rngs::StdRng| {
                 let c = |rng: &mut rand::rngs::StdRng| rng.random_range(0..3) as f64 * scale;
                 Point3::new(c(rng), c(rng), c(rng))
             };
             for _ in 0..3000 {
-                let mut make = |kind: u32, rng: &mut rand::rngs::StdRng| -> Ssv {
+                let make = |kind: u32, rng: &mut rand::rngs::StdRng| -> Ssv {
                     let r = rng.random_range(0..2) as f64 * 0.1 * scale;
                     match kind {
                         0 => Pss::new(pick(rng), r).unwrap().into(),
