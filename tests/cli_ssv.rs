@@ -99,3 +99,44 @@ fn bench_json_has_the_six_functions() {
         assert!(v[key].as_f64().expect("ns") > 0.0, "{key}");
     }
 }
+
+/// `biped ssv model` on the bundled humanoid: the JSON report agrees with the library.
+#[test]
+fn model_report_matches_library() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/crates/ssv/data/humanoid.toml");
+    let out = Command::new(env!("CARGO_BIN_EXE_biped"))
+        .args(["ssv", "model", file, "--pose", "standing", "--json"])
+        .output()
+        .expect("binary runs");
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let mut loaded = biped_ssv::format::load(file).expect("bundled model loads");
+    let poses = loaded.poses["standing"].clone();
+    loaded.model.update(&poses).expect("poses fit");
+    let pairs = v["pairs"].as_array().expect("pairs");
+    assert_eq!(pairs.len(), loaded.model.pairs().len());
+    for (row, (_, result)) in pairs.iter().zip(loaded.model.distances()) {
+        assert_eq!(row["distance"].as_f64(), result.distance());
+    }
+}
+
+/// A bad model file gives one error line naming the file and line, and a non-zero exit.
+#[test]
+fn model_bad_file_names_file_and_line() {
+    let dir = std::env::temp_dir().join(format!("biped-cli-ssv-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("bad.toml");
+    std::fs::write(
+        &path,
+        "activation_distance = 0.05\nbodies = [\"a\"]\nx = \n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_biped"))
+        .args(["ssv", "model", path.to_str().unwrap()])
+        .output()
+        .expect("binary runs");
+    assert!(!out.status.success());
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("bad.toml:3"), "{err}");
+}

@@ -94,7 +94,10 @@ pub fn run(json: bool) -> CliResult {
     }
     let pp_ns = rows[0].1;
     println!("SSV distance functions: median over {BATCHES} batches of {POOL} random queries");
-    println!("{:<6} {:>12} {:>10} {:>16}", "func", "abs [ns]", "rel [-]", "thesis rel [-]");
+    println!(
+        "{:<6} {:>12} {:>10} {:>16}",
+        "func", "abs [ns]", "rel [-]", "thesis rel [-]"
+    );
     for ((name, ns), (_, thesis)) in rows.iter().zip(THESIS_REL) {
         println!("{name:<6} {ns:>12.1} {:>10.2} {thesis:>16.2}", ns / pp_ns);
     }

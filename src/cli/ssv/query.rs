@@ -42,9 +42,9 @@ impl ShapeJson {
         let wrap = |e: SsvError| format!("\"{name}\": {e}");
         match (self.point, self.line, self.triangle) {
             (Some(p), None, None) => Pss::new(pt(p), self.radius).map(Ssv::from).map_err(wrap),
-            (None, Some([a, b]), None) => {
-                Lss::new(pt(a), pt(b), self.radius).map(Ssv::from).map_err(wrap)
-            }
+            (None, Some([a, b]), None) => Lss::new(pt(a), pt(b), self.radius)
+                .map(Ssv::from)
+                .map_err(wrap),
             (None, None, Some([a, b, c])) => Tss::new(pt(a), pt(b), pt(c), self.radius)
                 .map(Ssv::from)
                 .map_err(wrap),
