@@ -4,8 +4,9 @@
 //! 6.4.5): the closest pair of a segment and a triangle that do not intersect is either an
 //! edge-edge pair (three LL calls) or a segment end point over the face (two plane
 //! projections (6.21)); if the segment pierces the triangle the piercing point (6.46) gives
-//! c* = 0. Every candidate is a feasible pair whose distance is evaluated directly, so near
-//! degenerate input can only make a candidate lose, never report a wrong distance. A flat
+//! c* = 0. Every candidate is a feasible pair whose distance is evaluated exactly (edge pairs
+//! from their points, end points over the face from their height), so near-degenerate input
+//! can only make a candidate lose, never report a wrong distance. A flat
 //! triangle has no face candidates: it is the union of its edges (its longest edge).
 
 use super::assemble::{assemble, clamp01, edge_to_tri, key_index, min_key, Closest, Geom};

@@ -5,8 +5,11 @@
 //! c* = 0. For two triangles that do not intersect, one point of a closest pair lies on a
 //! boundary, so the minimum over these candidates is exact; intersecting (non-coplanar)
 //! triangles always have an edge piercing the other one, and overlapping coplanar triangles
-//! have crossing edges or a vertex inside the other face. A flat triangle has no face
-//! candidates: it is the union of its edges (its longest edge).
+//! have crossing edges or a vertex inside the other face. The piercing test only runs when
+//! each triangle straddles the other's plane (necessary for a non-coplanar intersection);
+//! the edge pairs are solved in structure-of-arrays form ([`super::edge_pairs`]) and all
+//! selections are branch-free arg-mins. A flat triangle has no face candidates: it is the
+//! union of its edges (its longest edge).
 
 use super::assemble::{assemble, clamp01, edge_to_tri, Closest, Geom};
 use super::edge_pairs::nearest_edge_pair;
