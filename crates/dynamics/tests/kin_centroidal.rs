@@ -23,11 +23,14 @@ struct Direct {
     l: Vector3<f64>,
 }
 
+/// Per body: mass, world CoM, world CoM velocity, spin momentum `I_C w` (world).
+type BodyTerms = (f64, Vector3<f64>, Vector3<f64>, Vector3<f64>);
+
 /// Mass-weighted sums over bodies at `(q, v)`, world coordinates.
 fn direct(model: &Model, q: &DVector<f64>, v: &DVector<f64>) -> Direct {
     let mut data = Data::new(model);
     forward_kinematics(model, &mut data, q, v, &DVector::zeros(model.nv())).unwrap();
-    let bodies: Vec<(f64, Vector3<f64>, Vector3<f64>, Vector3<f64>)> = model
+    let bodies: Vec<BodyTerms> = model
         .bodies()
         .iter()
         .enumerate()

@@ -80,7 +80,7 @@ impl Centroidal {
             }
         }
         self.set_com(&moment)?;
-        out.fill(0.0);
+        out.as_mut_slice().fill(0.0);
         let scale = 1.0 / self.mass;
         for i in 0..model.nbodies() {
             for k in self.jac.offset[i]..self.jac.offset[i + 1] {
@@ -156,7 +156,10 @@ impl Centroidal {
     pub fn angular_momentum_jacobian(&self, out: &mut DMatrix<f64>) -> Result<(), JacobianError> {
         self.ready()?;
         shape("out", out, 3, self.ag.ncols())?;
-        out.copy_from(&self.ag.rows(0, 3));
+        let src = self.ag.as_slice().chunks_exact(6);
+        for (dst, col) in out.as_mut_slice().chunks_exact_mut(3).zip(src) {
+            dst.copy_from_slice(&col[..3]);
+        }
         Ok(())
     }
 
@@ -207,7 +210,7 @@ impl Centroidal {
 
     /// `A_G`: every world column times its subtree inertia, shifted to the CoM.
     fn fill_ag(&mut self, model: &Model) {
-        self.ag.fill(0.0);
+        self.ag.as_mut_slice().fill(0.0);
         for i in 0..model.nbodies() {
             for k in self.jac.offset[i]..self.jac.offset[i + 1] {
                 let f = shift_to(&self.sub_inertia[i].apply(&self.jac.col[k]), &self.com);

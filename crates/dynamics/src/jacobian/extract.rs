@@ -18,12 +18,17 @@ pub enum JacobianFrame {
 }
 
 impl Jacobians {
-    /// Column indices `(k, v-index)` of body `body` and all its ancestors (the non-zero columns).
+    /// Calls `f(k, v_index)` for every column of body `body` and its ancestors (the non-zero
+    /// columns), walking the path to the root.
     #[inline]
-    fn chain(&self, body: usize) -> impl Iterator<Item = (usize, usize)> + '_ {
-        std::iter::successors(Some(body), move |&j| self.parent[j])
-            .flat_map(move |j| self.offset[j]..self.offset[j + 1])
-            .map(move |k| (k, self.index[k]))
+    fn for_chain(&self, body: usize, mut f: impl FnMut(usize, usize)) {
+        let mut j = Some(body);
+        while let Some(b) = j {
+            for k in self.offset[b]..self.offset[b + 1] {
+                f(k, self.index[k]);
+            }
+            j = self.parent[b];
+        }
     }
 
     /// Errors unless `body` exists and the requested quantities are computed.
@@ -66,11 +71,11 @@ impl Jacobians {
     ) -> Result<(), JacobianError> {
         self.ready(body, false)?;
         shape("out", out, 6, self.nv)?;
-        out.fill(0.0);
-        let (rot, pos) = (&self.rot[body], &self.pos[body]);
-        for (k, idx) in self.chain(body) {
-            add_column6(out, idx, &in_frame(frame, &self.col[k], rot, pos));
-        }
+        out.as_mut_slice().fill(0.0);
+        let (rot_t, pos) = (self.rot[body].transpose(), &self.pos[body]);
+        self.for_chain(body, |k, idx| {
+            add_column6(out, idx, &in_frame(frame, &self.col[k], &rot_t, pos))
+        });
         Ok(())
     }
 
@@ -87,17 +92,21 @@ impl Jacobians {
     ) -> Result<(), JacobianError> {
         self.ready(body, true)?;
         shape("out", out, 6, self.nv)?;
-        out.fill(0.0);
+        out.as_mut_slice().fill(0.0);
+        let rot_t = self.rot[body].transpose();
         let state = (
-            &self.rot[body],
+            &rot_t,
             &self.pos[body],
             &self.omega[body],
             &self.pos_dot[body],
         );
-        for (k, idx) in self.chain(body) {
-            let rate = rate_in_frame(frame, &self.col[k], &self.dcol[k], state);
-            add_column6(out, idx, &rate);
-        }
+        self.for_chain(body, |k, idx| {
+            add_column6(
+                out,
+                idx,
+                &rate_in_frame(frame, &self.col[k], &self.dcol[k], state),
+            )
+        });
         Ok(())
     }
 
@@ -112,12 +121,12 @@ impl Jacobians {
         self.ready(body, false)?;
         finite_point(point)?;
         shape("out", out, 3, self.nv)?;
-        out.fill(0.0);
+        out.as_mut_slice().fill(0.0);
         let (p, _) = self.point_state(body, point);
-        for (k, idx) in self.chain(body) {
+        self.for_chain(body, |k, idx| {
             let c = &self.col[k];
-            add_column3(out, idx, &(c.lin + c.ang.cross(&p)));
-        }
+            add_column3(out, idx, &(c.lin + c.ang.cross(&p)))
+        });
         Ok(())
     }
 
@@ -131,12 +140,12 @@ impl Jacobians {
         self.ready(body, true)?;
         finite_point(point)?;
         shape("out", out, 3, self.nv)?;
-        out.fill(0.0);
+        out.as_mut_slice().fill(0.0);
         let (p, p_dot) = self.point_state(body, point);
-        for (k, idx) in self.chain(body) {
+        self.for_chain(body, |k, idx| {
             let (c, d) = (&self.col[k], &self.dcol[k]);
-            add_column3(out, idx, &(d.lin + d.ang.cross(&p) + c.ang.cross(&p_dot)));
-        }
+            add_column3(out, idx, &(d.lin + d.ang.cross(&p) + c.ang.cross(&p_dot)))
+        });
         Ok(())
     }
 
@@ -163,27 +172,27 @@ impl Jacobians {
         }
         let (p, _) = self.point_state(body, point);
         let moment = p.cross(f);
-        for (k, idx) in self.chain(body) {
+        let out = out.as_mut_slice();
+        self.for_chain(body, |k, idx| {
             let c = &self.col[k];
             out[idx] += c.lin.dot(f) + c.ang.dot(&moment);
-        }
+        });
         Ok(())
     }
 }
 
-/// A world column (about the world origin) expressed in `frame` for a body at `(rot, pos)`.
+/// A world column (about the world origin) expressed in `frame` for a body at `pos` whose
+/// world rotation is `rot_t^T`.
 #[inline]
-fn in_frame(frame: JacobianFrame, c: &Motion, rot: &Matrix3<f64>, pos: &Vector3<f64>) -> Motion {
+fn in_frame(frame: JacobianFrame, c: &Motion, rot_t: &Matrix3<f64>, pos: &Vector3<f64>) -> Motion {
     match frame {
         JacobianFrame::World => *c,
         JacobianFrame::WorldAligned => Motion::new(c.ang, c.lin + c.ang.cross(pos)),
-        JacobianFrame::Body => {
-            Motion::new(rot.tr_mul(&c.ang), rot.tr_mul(&(c.lin + c.ang.cross(pos))))
-        }
+        JacobianFrame::Body => Motion::new(rot_t * c.ang, rot_t * (c.lin + c.ang.cross(pos))),
     }
 }
 
-/// Body pose and velocity `(A_Ik, r_O, omega, rdot_O)`, all in world coordinates.
+/// Body pose and velocity `(A_Ik^T, r_O, omega, rdot_O)`, vectors in world coordinates.
 type BodyState<'a> = (
     &'a Matrix3<f64>,
     &'a Vector3<f64>,
@@ -194,7 +203,7 @@ type BodyState<'a> = (
 /// Time derivative of [`in_frame`] for a column `c` with rate `d` at a moving body.
 #[inline]
 fn rate_in_frame(frame: JacobianFrame, c: &Motion, d: &Motion, s: BodyState<'_>) -> Motion {
-    let (rot, pos, omega, pos_dot) = s;
+    let (rot_t, pos, omega, pos_dot) = s;
     if frame == JacobianFrame::World {
         return *d;
     }
@@ -202,8 +211,8 @@ fn rate_in_frame(frame: JacobianFrame, c: &Motion, d: &Motion, s: BodyState<'_>)
     let lin_dot = d.lin + d.ang.cross(pos) + c.ang.cross(pos_dot);
     match frame {
         JacobianFrame::Body => Motion::new(
-            rot.tr_mul(&(d.ang - omega.cross(&c.ang))),
-            rot.tr_mul(&(lin_dot - omega.cross(&lin))),
+            rot_t * (d.ang - omega.cross(&c.ang)),
+            rot_t * (lin_dot - omega.cross(&lin)),
         ),
         _ => Motion::new(d.ang, lin_dot),
     }
