@@ -58,6 +58,10 @@ fn jacobian_and_centroidal_calls_do_not_allocate() {
                     jac.body_jacobian(i, frame, &mut j6).unwrap();
                     jac.body_jacobian_derivative(i, frame, &mut j6).unwrap();
                 }
+                jac.frame_jacobian(i, &point, JacobianFrame::Body, &mut j6)
+                    .unwrap();
+                jac.frame_jacobian_derivative(i, &point, JacobianFrame::World, &mut j6)
+                    .unwrap();
                 jac.point_jacobian(i, &point, &mut j3).unwrap();
                 jac.point_jacobian_derivative(i, &point, &mut j3).unwrap();
                 jac.point_jacobian_tr_mul_add(i, &point, &point, &mut grad)

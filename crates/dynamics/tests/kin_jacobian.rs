@@ -84,12 +84,17 @@ proptest! {
             e[col] = 1.0;
             let plus = poses(&model, &moved(&model, &q, &e, h));
             let minus = poses(&model, &moved(&model, &q, &e, -h));
+            let at = |s: &(Matrix3<f64>, Vector3<f64>)| (s.0, s.1 + s.0 * point);
             for i in 0..model.nbodies() {
                 for frame in FRAMES {
                     jac.body_jacobian(i, frame, &mut j6).unwrap();
                     let fd = fd_velocity(frame, &mid[i], &plus[i], &minus[i], h);
                     let got: Vec<f64> = j6.column(col).iter().copied().collect();
                     prop_assert!(rel_err(&got, &fd) < 1e-6, "body {i} col {col} {frame:?}: {got:?} vs {fd:?}");
+                    jac.frame_jacobian(i, &point, frame, &mut j6).unwrap();
+                    let fd = fd_velocity(frame, &at(&mid[i]), &at(&plus[i]), &at(&minus[i]), h);
+                    let got: Vec<f64> = j6.column(col).iter().copied().collect();
+                    prop_assert!(rel_err(&got, &fd) < 1e-6, "frame on {i} col {col} {frame:?}");
                 }
                 jac.point_jacobian(i, &point, &mut j3).unwrap();
                 let p = |s: &(Matrix3<f64>, Vector3<f64>)| s.1 + s.0 * point;
@@ -126,6 +131,11 @@ proptest! {
                 minus.body_jacobian(i, frame, &mut jm).unwrap();
                 let fd = (&jp - &jm) / (2.0 * h);
                 prop_assert!(rel_err(d.as_slice(), fd.as_slice()) < 1e-6, "body {i} {frame:?}\n{d}\n{fd}");
+                at.frame_jacobian_derivative(i, &point, frame, &mut d).unwrap();
+                plus.frame_jacobian(i, &point, frame, &mut jp).unwrap();
+                minus.frame_jacobian(i, &point, frame, &mut jm).unwrap();
+                let fd = (&jp - &jm) / (2.0 * h);
+                prop_assert!(rel_err(d.as_slice(), fd.as_slice()) < 1e-6, "frame on {i} {frame:?}");
             }
             at.point_jacobian_derivative(i, &point, &mut d3).unwrap();
             plus.point_jacobian(i, &point, &mut jp3).unwrap();
@@ -174,8 +184,16 @@ proptest! {
             jac.point_jacobian_derivative(i, &point, &mut jd3).unwrap();
             let got = &j3 * &a + &jd3 * &v;
             let w = vel.ang;
-            let expected = rot * (acc.lin + acc.ang.cross(&point) + w.cross(&w.cross(&point)));
+            let acc_p = acc.lin + acc.ang.cross(&point) + w.cross(&w.cross(&point));
+            let expected = rot * acc_p;
             prop_assert!(rel_err(got.as_slice(), expected.as_slice()) < 1e-10, "point on {i}");
+
+            jac.frame_jacobian(i, &point, JacobianFrame::Body, &mut j).unwrap();
+            jac.frame_jacobian_derivative(i, &point, JacobianFrame::Body, &mut jd).unwrap();
+            let got = &j * &a + &jd * &v;
+            let lin = acc_p - w.cross(&(vel.lin + w.cross(&point)));
+            let expected = [acc.ang.x, acc.ang.y, acc.ang.z, lin.x, lin.y, lin.z];
+            prop_assert!(rel_err(got.as_slice(), &expected) < 1e-10, "body-frame frame on {i}");
         }
     }
 

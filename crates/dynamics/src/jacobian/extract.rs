@@ -69,14 +69,7 @@ impl Jacobians {
         frame: JacobianFrame,
         out: &mut DMatrix<f64>,
     ) -> Result<(), JacobianError> {
-        self.ready(body, false)?;
-        shape("out", out, 6, self.nv)?;
-        out.as_mut_slice().fill(0.0);
-        let (rot_t, pos) = (self.rot[body].transpose(), &self.pos[body]);
-        self.for_chain(body, |k, idx| {
-            add_column6(out, idx, &in_frame(frame, &self.col[k], &rot_t, pos))
-        });
-        Ok(())
+        self.frame_jacobian(body, &Vector3::zeros(), frame, out)
     }
 
     /// Time derivative `Jdot_i` of [`Self::body_jacobian`]: `d/dt (J_i v) = J_i vdot + Jdot_i v`.
@@ -90,16 +83,46 @@ impl Jacobians {
         frame: JacobianFrame,
         out: &mut DMatrix<f64>,
     ) -> Result<(), JacobianError> {
-        self.ready(body, true)?;
+        self.frame_jacobian_derivative(body, &Vector3::zeros(), frame, out)
+    }
+
+    /// Jacobian (6 x nv) of a frame fixed in body `body` with origin `point` (body
+    /// coordinates) and the body's axes, e.g. a sole frame; the linear rows are the velocity of
+    /// `point` ([`JacobianFrame::World`] does not depend on `point`).
+    pub fn frame_jacobian(
+        &self,
+        body: usize,
+        point: &Vector3<f64>,
+        frame: JacobianFrame,
+        out: &mut DMatrix<f64>,
+    ) -> Result<(), JacobianError> {
+        self.ready(body, false)?;
+        finite_point(point)?;
         shape("out", out, 6, self.nv)?;
         out.as_mut_slice().fill(0.0);
         let rot_t = self.rot[body].transpose();
-        let state = (
-            &rot_t,
-            &self.pos[body],
-            &self.omega[body],
-            &self.pos_dot[body],
-        );
+        let (p, _) = self.point_state(body, point);
+        self.for_chain(body, |k, idx| {
+            add_column6(out, idx, &in_frame(frame, &self.col[k], &rot_t, &p))
+        });
+        Ok(())
+    }
+
+    /// Time derivative of [`Self::frame_jacobian`] (see [`Self::body_jacobian_derivative`]).
+    pub fn frame_jacobian_derivative(
+        &self,
+        body: usize,
+        point: &Vector3<f64>,
+        frame: JacobianFrame,
+        out: &mut DMatrix<f64>,
+    ) -> Result<(), JacobianError> {
+        self.ready(body, true)?;
+        finite_point(point)?;
+        shape("out", out, 6, self.nv)?;
+        out.as_mut_slice().fill(0.0);
+        let rot_t = self.rot[body].transpose();
+        let (p, p_dot) = self.point_state(body, point);
+        let state = (&rot_t, &p, &self.omega[body], &p_dot);
         self.for_chain(body, |k, idx| {
             add_column6(
                 out,
@@ -181,7 +204,7 @@ impl Jacobians {
     }
 }
 
-/// A world column (about the world origin) expressed in `frame` for a body at `pos` whose
+/// A world column (about the world origin) expressed in `frame` for a frame at `pos` whose
 /// world rotation is `rot_t^T`.
 #[inline]
 fn in_frame(frame: JacobianFrame, c: &Motion, rot_t: &Matrix3<f64>, pos: &Vector3<f64>) -> Motion {
@@ -192,7 +215,7 @@ fn in_frame(frame: JacobianFrame, c: &Motion, rot_t: &Matrix3<f64>, pos: &Vector
     }
 }
 
-/// Body pose and velocity `(A_Ik^T, r_O, omega, rdot_O)`, vectors in world coordinates.
+/// Frame pose and velocity `(A_Ik^T, r_P, omega, rdot_P)`, vectors in world coordinates.
 type BodyState<'a> = (
     &'a Matrix3<f64>,
     &'a Vector3<f64>,
@@ -200,7 +223,7 @@ type BodyState<'a> = (
     &'a Vector3<f64>,
 );
 
-/// Time derivative of [`in_frame`] for a column `c` with rate `d` at a moving body.
+/// Time derivative of [`in_frame`] for a column `c` with rate `d` at a moving frame.
 #[inline]
 fn rate_in_frame(frame: JacobianFrame, c: &Motion, d: &Motion, s: BodyState<'_>) -> Motion {
     let (rot_t, pos, omega, pos_dot) = s;
