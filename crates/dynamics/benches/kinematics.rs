@@ -1,6 +1,7 @@
 //! Criterion benchmarks of the Jacobian and centroidal computations on the bundled Unitree G1
 //! (`data/g1_29dof_rev_1_0.urdf`) with a floating base: world columns (with and without
-//! derivatives), a foot body Jacobian and its derivative, the CoM Jacobian, `A_G` / `J_L`.
+//! derivatives), a foot body Jacobian and its derivative, the CoM Jacobian, `A_G` / `J_L`
+//! (position only, and with momentum and bias `Adot_G v`).
 
 use biped_dynamics::urdf::{load_file, UrdfOptions};
 use biped_dynamics::{center_of_mass, Centroidal, Data, JacobianFrame, Jacobians, Model};
@@ -82,6 +83,14 @@ fn kinematics(c: &mut Criterion) {
         b.iter(|| {
             cen.com_jacobian(&model, &mut data, black_box(&q), &mut j3)
                 .unwrap();
+            black_box(&j3);
+        })
+    });
+    group.bench_function("centroidal_ag_jl", |b| {
+        b.iter(|| {
+            cen.compute_matrix(&model, &mut data, black_box(&q))
+                .unwrap();
+            cen.angular_momentum_jacobian(&mut j3).unwrap();
             black_box(&j3);
         })
     });

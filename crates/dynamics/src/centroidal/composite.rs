@@ -24,6 +24,7 @@ pub struct Centroidal {
     momentum: Force,
     bias: Force,
     have_ag: bool,
+    have_momentum: bool,
 }
 
 impl Centroidal {
@@ -42,6 +43,7 @@ impl Centroidal {
             momentum: Force::zero(),
             bias: Force::zero(),
             have_ag: false,
+            have_momentum: false,
         }
     }
 
@@ -57,6 +59,7 @@ impl Centroidal {
     ) -> Result<(), JacobianError> {
         shape("out", out, 3, model.nv())?;
         self.have_ag = false;
+        self.have_momentum = false;
         self.jac.fill(model, data, q, None, false)?;
         for (i, body) in model.bodies().iter().enumerate() {
             let inertia = body.inertia();
@@ -107,7 +110,33 @@ impl Centroidal {
         v: &DVector<f64>,
     ) -> Result<(), JacobianError> {
         self.have_ag = false;
+        self.have_momentum = false;
         self.jac.fill(model, data, q, Some(v), false)?;
+        self.assemble(model, data)?;
+        self.momentum = self.ag_times(v);
+        self.com_velocity = self.momentum.lin / self.mass;
+        propagate_accelerations(model, data, None);
+        self.bias = shift_to(&momentum_rate(model, data), &self.com);
+        self.have_momentum = true;
+        Ok(())
+    }
+
+    /// Position-only computation at `q`: CoM and `A_G` (hence `J_L`), without momentum and
+    /// bias (cheaper, e.g. for inverse kinematics). Runs the position kinematics into `data`.
+    pub fn compute_matrix(
+        &mut self,
+        model: &Model,
+        data: &mut Data,
+        q: &DVector<f64>,
+    ) -> Result<(), JacobianError> {
+        self.have_ag = false;
+        self.have_momentum = false;
+        self.jac.fill(model, data, q, None, false)?;
+        self.assemble(model, data)
+    }
+
+    /// Composite inertias, total mass, CoM and `A_G` from the poses and columns.
+    fn assemble(&mut self, model: &Model, data: &Data) -> Result<(), JacobianError> {
         self.composite_inertias(model, data);
         let mut total = ArticulatedInertia::zero();
         for (i, body) in model.bodies().iter().enumerate() {
@@ -123,10 +152,6 @@ impl Centroidal {
         );
         self.set_com(&moment)?;
         self.fill_ag(model);
-        self.momentum = self.ag_times(v);
-        self.com_velocity = self.momentum.lin / self.mass;
-        propagate_accelerations(model, data, None);
-        self.bias = shift_to(&momentum_rate(model, data), &self.com);
         self.have_ag = true;
         Ok(())
     }
@@ -142,11 +167,12 @@ impl Centroidal {
     }
 
     /// CoM velocity `p / m` from the last [`Self::compute`].
-    pub fn com_velocity(&self) -> Vector3<f64> {
-        self.com_velocity
+    pub fn com_velocity(&self) -> Result<Vector3<f64>, JacobianError> {
+        self.ready_momentum()?;
+        Ok(self.com_velocity)
     }
 
-    /// Centroidal momentum matrix `A_G` (6 x nv, `h_G = A_G v`) from the last [`Self::compute`].
+    /// Centroidal momentum matrix `A_G` (6 x nv, `h_G = A_G v`) from the last computation.
     pub fn ag(&self) -> Result<&DMatrix<f64>, JacobianError> {
         self.ready()?;
         Ok(&self.ag)
@@ -165,17 +191,26 @@ impl Centroidal {
 
     /// Centroidal momentum `h_G = [L_G; p]` (7.1) from the last [`Self::compute`].
     pub fn momentum(&self) -> Result<Force, JacobianError> {
-        self.ready()?;
+        self.ready_momentum()?;
         Ok(self.momentum)
     }
 
     /// Bias `Adot_G v`: `d h_G / dt = A_G vdot + Adot_G v`, from the last [`Self::compute`].
     pub fn ag_bias(&self) -> Result<Force, JacobianError> {
-        self.ready()?;
+        self.ready_momentum()?;
         Ok(self.bias)
     }
 
-    /// Errors unless [`Self::compute`] has succeeded.
+    /// Errors unless [`Self::compute`] has succeeded (momentum and bias).
+    fn ready_momentum(&self) -> Result<(), JacobianError> {
+        if self.have_momentum {
+            Ok(())
+        } else {
+            Err(JacobianError::NotComputed("centroidal momentum"))
+        }
+    }
+
+    /// Errors unless [`Self::compute`] or [`Self::compute_matrix`] has succeeded.
     fn ready(&self) -> Result<(), JacobianError> {
         if self.have_ag {
             Ok(())
