@@ -15,9 +15,9 @@ pub mod segment;
 
 pub use distance::distance;
 pub use error::SsvError;
-pub use primitives::{Lss, Pss, Ssv, Tss};
-pub use result::{DistanceResult, PrimitiveParam};
 pub use format::{FormatError, LoadedModel};
 pub use model::{CollisionModel, ModelError, SegmentPair};
 pub use obb::Obb;
+pub use primitives::{Lss, Pss, Ssv, Tss};
+pub use result::{DistanceResult, PrimitiveParam};
 pub use segment::{ClosestPair, MirrorPlane, PairDistance, PairQuery, Segment};
