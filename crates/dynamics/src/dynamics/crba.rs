@@ -43,7 +43,7 @@ pub(crate) fn crba(model: &Model, data: &mut Data) {
             head[p] += tail[0];
         }
     }
-    data.mass.fill(0.0);
+    data.mass.as_mut_slice().fill(0.0);
     for (i, body) in model.bodies.iter().enumerate() {
         let set = body.v_set.as_slice();
         let offset = data.col_offset[i];

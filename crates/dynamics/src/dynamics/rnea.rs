@@ -21,7 +21,7 @@ pub(crate) fn rnea_from_kinematics(
     } else {
         std::mem::take(&mut data.tau)
     };
-    out.fill(0.0);
+    out.as_mut_slice().fill(0.0);
     for i in (0..model.nbodies()).rev() {
         let body = &model.bodies[i];
         let f = data.fnet[i];
