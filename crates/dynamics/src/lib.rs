@@ -13,6 +13,7 @@ pub mod dynamics;
 pub mod error;
 pub mod jacobian;
 pub mod kinematics;
+pub mod mechanism;
 pub mod model;
 pub mod spatial;
 

@@ -1,0 +1,74 @@
+//! Closed-form mechanisms that couple a body's relative motion to generalized coordinates of
+//! other joints (thesis ch. 3): the interface between drive-train kinematics and the
+//! multibody algorithms with sub-systems (2.6-2.9).
+//!
+//! A mechanism *part* (a screw nut, a push rod, a motor rotor, ...) moves relative to its
+//! parent body as a nonlinear function of up to [`MAX_COUPLED`] input coordinates `q_in`
+//! (joint coordinates of other bodies). [`Coupling::motion`] returns, at `(q_in, qd_in)`:
+//! - the pose of the part's frame in the parent's frame (`A_pk`, `r_PO`);
+//! - the relative Jacobian `J`: columns `d/dqd_j` of the relative twist
+//!   `[omega_rel; v_rel]`, where `skew(omega_rel) = A_pk^T dA_pk/dt` and `v_rel = A_pk^T dr_PO/dt`
+//!   (both in **part-frame** coordinates, angular part first like [`crate::spatial::Motion`]);
+//! - the bias `Jdot qd`: the component-wise time derivative of `J(q_in(t))` times `qd_in`, so
+//!   that `d/dt [omega_rel; v_rel] = J qdd_in + bias` (component-wise derivative of the
+//!   part-frame components).
+//! These definitions are operational: every implementation is checked against central finite
+//! differences of `pose` and `J` along `q_in + qd_in t`.
+
+use nalgebra::{Isometry3, Vector6};
+use thiserror::Error;
+
+/// Largest number of input coordinates a coupled part may depend on.
+pub const MAX_COUPLED: usize = 3;
+
+/// Relative kinematics of one coupled part at `(q_in, qd_in)` (see the module doc).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CoupledMotion {
+    /// Pose of the part frame in the parent body's frame.
+    pub pose: Isometry3<f64>,
+    /// Relative-twist Jacobian columns (part frame, `[angular; linear]`); unused columns zero.
+    pub jacobian: [Vector6<f64>; MAX_COUPLED],
+    /// Relative-acceleration bias `Jdot qd_in` (part frame, `[angular; linear]`).
+    pub bias: Vector6<f64>,
+}
+
+/// Why a mechanism cannot be evaluated at the given input.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum MechanismError {
+    /// The input lies outside the mechanism's assembly range (no real solution of the loop).
+    #[error("{mechanism}: input {input:?} outside the assembly range ({reason})")]
+    OutOfRange {
+        /// Mechanism name.
+        mechanism: &'static str,
+        /// The offending input coordinates.
+        input: Vec<f64>,
+        /// What failed, e.g. "discriminant < 0 in (3.31)".
+        reason: &'static str,
+    },
+    /// Wrong number of inputs or a non-finite value.
+    #[error("{mechanism}: {reason}")]
+    BadInput {
+        /// Mechanism name.
+        mechanism: &'static str,
+        /// What is wrong.
+        reason: String,
+    },
+    /// A Newton-Raphson inversion did not converge.
+    #[error("{mechanism}: Newton-Raphson did not converge after {iterations} iterations (residual {residual:e})")]
+    NoConvergence {
+        /// Mechanism name.
+        mechanism: &'static str,
+        /// Iterations performed.
+        iterations: usize,
+        /// Final residual norm.
+        residual: f64,
+    },
+}
+
+/// A closed-form mechanism part whose relative motion depends on input coordinates.
+pub trait Coupling {
+    /// Number of input coordinates (`<= MAX_COUPLED`).
+    fn n_inputs(&self) -> usize;
+    /// Relative pose, Jacobian and bias at `(q_in, qd_in)` (slices of length `n_inputs`).
+    fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError>;
+}
