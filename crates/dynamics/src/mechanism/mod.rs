@@ -12,6 +12,7 @@
 //! - the bias `Jdot qd`: the component-wise time derivative of `J(q_in(t))` times `qd_in`, so
 //!   that `d/dt [omega_rel; v_rel] = J qdd_in + bias` (component-wise derivative of the
 //!   part-frame components).
+//!
 //! These definitions are operational: every implementation is checked against central finite
 //! differences of `pose` and `J` along `q_in + qd_in t`.
 
