@@ -1,10 +1,12 @@
 //! End-to-end tests of the `biped model`, `biped dynamics` and `biped bench dynamics` contract.
 
+mod common;
+
+use common::{json_lines, run};
+
 use rand::{Rng, SeedableRng};
 use serde_json::{json, Value};
-use std::io::Write;
 use std::path::PathBuf;
-use std::process::{Command, Output, Stdio};
 
 /// The bundled G1 humanoid URDF.
 fn g1() -> String {
@@ -12,34 +14,6 @@ fn g1() -> String {
         .join("crates/dynamics/data/g1_29dof_rev_1_0.urdf")
         .display()
         .to_string()
-}
-
-/// Runs `biped ARGS` with `input` on stdin.
-fn run(args: &[&str], input: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_biped"))
-        .args(args)
-        .current_dir(env!("CARGO_TARGET_TMPDIR"))
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
-    child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(input.as_bytes())
-        .expect("write stdin");
-    child.wait_with_output().expect("finishes")
-}
-
-/// Every stdout line parsed as JSON.
-fn json_lines(out: &Output) -> Vec<Value> {
-    String::from_utf8(out.stdout.clone())
-        .expect("utf8")
-        .lines()
-        .map(|l| serde_json::from_str(l).expect("every output line is JSON"))
-        .collect()
 }
 
 /// A JSON array of numbers.

@@ -1,29 +1,13 @@
 //! End-to-end tests of the `biped ssv` command-line contract.
 
-use std::io::Write;
-use std::process::{Command, Stdio};
+mod common;
+
+use common::{json_lines, run};
 
 /// Run `biped ssv query` with `input` on stdin; return (exit code, output lines).
 fn query(input: &str) -> (i32, Vec<serde_json::Value>) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_biped"))
-        .args(["ssv", "query"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
-    child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(input.as_bytes())
-        .expect("write stdin");
-    let out = child.wait_with_output().expect("finishes");
-    let lines = String::from_utf8(out.stdout)
-        .expect("utf8")
-        .lines()
-        .map(|l| serde_json::from_str(l).expect("every output line is JSON"))
-        .collect();
-    (out.status.code().expect("exit code"), lines)
+    let out = run(&["ssv", "query"], input);
+    (out.status.code().expect("exit code"), json_lines(&out))
 }
 
 fn vec3(v: &serde_json::Value) -> [f64; 3] {
@@ -89,10 +73,7 @@ fn bad_lines_get_errors_and_exit_1_but_processing_goes_on() {
 
 #[test]
 fn bench_json_has_the_six_functions() {
-    let out = Command::new(env!("CARGO_BIN_EXE_biped"))
-        .args(["ssv", "bench", "--json"])
-        .output()
-        .expect("binary runs");
+    let out = run(&["ssv", "bench", "--json"], "");
     assert!(out.status.success());
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
     for key in ["PP", "PL", "PT", "LL", "LT", "TT"] {
@@ -104,10 +85,7 @@ fn bench_json_has_the_six_functions() {
 #[test]
 fn model_report_matches_library() {
     let file = concat!(env!("CARGO_MANIFEST_DIR"), "/crates/ssv/data/humanoid.toml");
-    let out = Command::new(env!("CARGO_BIN_EXE_biped"))
-        .args(["ssv", "model", file, "--pose", "standing", "--json"])
-        .output()
-        .expect("binary runs");
+    let out = run(&["ssv", "model", file, "--pose", "standing", "--json"], "");
     assert!(out.status.success());
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
     let mut loaded = biped_ssv::format::load(file).expect("bundled model loads");
@@ -131,10 +109,7 @@ fn model_bad_file_names_file_and_line() {
         "activation_distance = 0.05\nbodies = [\"a\"]\nx = \n",
     )
     .unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_biped"))
-        .args(["ssv", "model", path.to_str().unwrap()])
-        .output()
-        .expect("binary runs");
+    let out = run(&["ssv", "model", path.to_str().unwrap()], "");
     assert!(!out.status.success());
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(err.lines().count(), 1, "{err}");
