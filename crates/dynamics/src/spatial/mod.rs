@@ -23,6 +23,7 @@ mod force;
 mod inertia;
 mod motion;
 mod transform;
+mod vector;
 
 pub use articulated::ArticulatedInertia;
 pub use axis::{Axis, JointAxis, SubspaceKind};
