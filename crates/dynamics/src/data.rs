@@ -2,6 +2,7 @@
 
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::spatial::{ArticulatedInertia, Force, Motion, SpatialTransform};
+use crate::subsystem::MAX_SUBSYSTEM_DOF;
 use crate::Model;
 use nalgebra::{
     DMatrix, DVector, Isometry3, Matrix3, Matrix6, Rotation3, Translation3, UnitQuaternion,
@@ -58,6 +59,18 @@ pub struct Data {
     pub(crate) col_world: Vec<Motion>,
     /// Offset of each body's columns in `col_world`.
     pub(crate) col_offset: Vec<usize>,
+    /// Member transforms `C-hat_j` from the sub-system parent (2.77), per body.
+    pub(crate) cbar: Vec<SpatialTransform>,
+    /// Member Jacobians `J-hat_j` over the sub-system's coordinates (2.78), per body.
+    pub(crate) jbar: Vec<[Motion; MAX_SUBSYSTEM_DOF]>,
+    /// Member bias accelerations `b-hat_j` (2.79), per body.
+    pub(crate) bbar: Vec<Motion>,
+    /// Cholesky factor of `M_S` (2.76a), per sub-system.
+    pub(crate) sub_l: Vec<[[f64; MAX_SUBSYSTEM_DOF]; MAX_SUBSYSTEM_DOF]>,
+    /// Rows of `B_S` (2.76b) as parent-frame forces, per sub-system.
+    pub(crate) sub_b: Vec<[Force; MAX_SUBSYSTEM_DOF]>,
+    /// `p_S` (2.68 for sub-systems), per sub-system.
+    pub(crate) sub_p: Vec<[f64; MAX_SUBSYSTEM_DOF]>,
     /// Generalized accelerations (output of forward dynamics).
     pub ddq: DVector<f64>,
     /// Generalized forces (output of inverse dynamics).
@@ -75,6 +88,7 @@ impl Data {
     pub fn new(model: &Model) -> Self {
         let n = model.nbodies();
         let nv = model.nv();
+        let ns = model.subsystems.len();
         let mut jacobian6 = vec![Matrix6::zeros(); n];
         for (i, b) in model.bodies.iter().enumerate() {
             if matches!(b.joint, Joint::Quaternion) {
@@ -108,6 +122,12 @@ impl Data {
             ic: vec![ArticulatedInertia::zero(); n],
             col_world: vec![Motion::zero(); col_offset.last().copied().unwrap_or(0)],
             col_offset: col_offset[..n].to_vec(),
+            cbar: vec![SpatialTransform::identity(); n],
+            jbar: vec![[Motion::zero(); MAX_SUBSYSTEM_DOF]; n],
+            bbar: vec![Motion::zero(); n],
+            sub_l: vec![[[0.0; MAX_SUBSYSTEM_DOF]; MAX_SUBSYSTEM_DOF]; ns],
+            sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
+            sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
             ddq: DVector::zeros(nv),
             tau: DVector::zeros(nv),
             mass: DMatrix::zeros(nv, nv),

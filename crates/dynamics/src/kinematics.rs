@@ -76,6 +76,22 @@ pub(crate) fn relative_motion(
     }
 }
 
+/// Column `c` of body `i`'s relative Jacobian `J_i` (2.35) in body coordinates.
+#[inline]
+pub(crate) fn joint_column(data: &Data, i: usize, joint: &Joint, c: usize) -> Motion {
+    match joint {
+        Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => ax.motion(1.0),
+        Joint::Fixed => Motion::zero(),
+        Joint::EulerZxz | Joint::Quaternion => {
+            let m = &data.jacobian6[i];
+            Motion::new(
+                Vector3::new(m[(0, c)], m[(1, c)], m[(2, c)]),
+                Vector3::new(m[(3, c)], m[(4, c)], m[(5, c)]),
+            )
+        }
+    }
+}
+
 /// `J_i^T f` accumulated into `out` at the body's index set.
 #[inline]
 pub(crate) fn add_projected_force(

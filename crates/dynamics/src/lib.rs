@@ -16,6 +16,7 @@ pub mod kinematics;
 pub mod mechanism;
 pub mod model;
 pub mod spatial;
+pub mod subsystem;
 
 pub mod dill;
 pub mod urdf;
@@ -28,4 +29,5 @@ pub use error::{DynamicsError, ModelError};
 pub use jacobian::{JacobianError, JacobianFrame, Jacobians};
 pub use kinematics::{forward_kinematics, update_placements};
 pub use model::{Body, BodyId, BodySpec, IndexSet, JointInfo, JointModel, Model, ModelBuilder};
+pub use subsystem::{Node, NodeKind, Subsystem};
 pub use spatial::{Force, Motion, RigidInertia, SpatialTransform, Wrench};

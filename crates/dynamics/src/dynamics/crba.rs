@@ -8,21 +8,9 @@
 //! mapped there once, so composite inertias accumulate by plain addition and every entry
 //! `M_jk = S_j . (I^c_i S_i)` of an ancestor `j` is a single 6-D dot product.
 
-use crate::model::joint::Joint;
-use crate::spatial::{Force, Motion, SpatialTransform};
+use crate::kinematics::joint_column as column;
+use crate::spatial::{Force, SpatialTransform};
 use crate::{Data, Model};
-
-/// Column `c` of body `i`'s relative Jacobian `J_i` (body coordinates).
-#[inline]
-fn column(data: &Data, i: usize, joint: &Joint, c: usize) -> Motion {
-    match joint {
-        Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => ax.motion(1.0),
-        Joint::Fixed => Motion::zero(),
-        Joint::EulerZxz | Joint::Quaternion => {
-            Motion::from_vector(&data.jacobian6[i].column(c).into_owned())
-        }
-    }
-}
 
 /// Mass matrix into `data.mass` from the world poses already in `data`.
 pub(crate) fn crba(model: &Model, data: &mut Data) {

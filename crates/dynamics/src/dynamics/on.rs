@@ -1,4 +1,4 @@
-//! The O(n) forward-dynamics algorithm of section 2.7-2.8, tree case (Algorithms 2.1-2.4).
+//! The O(n) forward-dynamics algorithm of section 2.7-2.8 (Algorithms 2.1-2.4) with sub-systems.
 //!
 //! Propagation quantities in the thesis' notation, per body `i` with joint Jacobian `J_i`:
 //! - backward (2.67)-(2.72): `M-bar_i = M_i + sum_j C_j^T K_j`, `f-bar_i = f_i - sum_j C_j^T k_j`,
@@ -8,14 +8,16 @@
 //!
 //! Zero pruning: for one-DoF joints `U = M-bar J` is a 6-vector and `D = J^T U` a scalar, so
 //! `P_i a = -D^-1 U^T (C_i a)` and `C_i^T K_i = C_i^T (M-bar - U D^-1 U^T) C_i` are evaluated
-//! without forming `P_i` or `K_i`. Bodies are dispatched by joint type with one `match` per body;
-//! a sub-system body type (2.6) slots in as another arm of the same three passes.
+//! without forming `P_i` or `K_i`. The passes run over the rewired body list (2.9): bodies are
+//! dispatched by joint type with one `match` per body, sub-systems (2.6-2.8) by
+//! [`crate::subsystem`]'s branches, so geared rotors and coupled parts are supported.
 
 use super::solve::check_pivot;
 use crate::check;
 use crate::kinematics::{first_forward, six};
 use crate::model::joint::Joint;
 use crate::spatial::{ArticulatedInertia, Force, Motion, Wrench};
+use crate::subsystem::{self, NodeKind};
 use crate::{Data, DynamicsError, Model};
 use nalgebra::{DVector, Matrix6};
 
@@ -32,15 +34,13 @@ pub fn forward_pass_1(
     check::configuration(model, q)?;
     check::vector("v", v, model.nv())?;
     check::wrenches(model, fext)?;
-    if model.has_rotors() {
-        return Err(DynamicsError::Unsupported(
-            "the tree-case O(n) algorithm cannot handle geared rotors (shared coordinates need a sub-system); use Crba or Sparse",
-        ));
-    }
     first_forward(model, data, q, v, fext);
     for (i, body) in model.bodies.iter().enumerate() {
         data.mbar[i] = body.inertia.to_articulated();
         data.fbar[i] = data.force[i];
+    }
+    for s in 0..model.subsystems.len() {
+        subsystem::on::hat_kinematics(model, data, s);
     }
     Ok(())
 }
@@ -54,47 +54,62 @@ pub fn backward_pass(
 ) -> Result<(), DynamicsError> {
     check::data(model, data)?;
     check::vector("tau", tau, model.nv())?;
-    for i in (0..model.nbodies()).rev() {
-        let body = &model.bodies[i];
-        // Each arm leaves M-bar_i - U D^-1 U^T in `mbar[i]` (no longer needed) and returns k_i.
-        let k = match &body.joint {
-            Joint::Revolute(ax) | Joint::Prismatic(ax) => {
-                let mbar = &mut data.mbar[i];
-                let u = ax.apply_inertia(mbar);
-                let d = ax.dot_force(&u);
-                if d <= 0.0 || !d.is_finite() {
-                    return Err(DynamicsError::NotPositiveDefinite {
-                        index: body.v_index,
-                        pivot: d,
-                    });
-                }
-                let dinv = 1.0 / d;
-                let b = &data.bias_acc[i];
-                let fbar = &data.fbar[i];
-                let p = dinv * (tau[body.v_index] - u.dot(b) + ax.dot_force(fbar));
-                let k = mbar.apply(b) + u * p - *fbar;
-                mbar.sub_outer(&u, dinv);
-                data.u[i] = u;
-                data.dinv[i] = dinv;
-                data.p1[i] = p;
-                k
-            }
-            Joint::Fixed => data.mbar[i].apply(&data.bias_acc[i]) - data.fbar[i],
-            Joint::EulerZxz | Joint::Quaternion => {
-                six_dof_backward(data, i, body.v_index, tau, body.parent.is_some())?
-            }
-            Joint::Rotor(_) => {
-                return Err(DynamicsError::Unsupported(
-                    "the tree-case O(n) algorithm cannot handle geared rotors",
-                ))
-            }
-        };
-        if let Some(p) = body.parent {
-            let x = &data.x[i];
-            let (head, tail) = data.mbar.split_at_mut(i);
-            tail[0].add_tr_transform_to(x, &mut head[p]);
-            data.fbar[p] -= x.tr_apply_force(&k);
+    for node in model.nodes.iter().rev() {
+        match node.kind {
+            NodeKind::Body(i) => body_backward(model, data, i, tau)?,
+            NodeKind::Subsystem(s) => subsystem::on::backward(model, data, s, tau)?,
         }
+    }
+    Ok(())
+}
+
+/// Backward step of body `i` outside sub-systems: `P_i, p_i, K_i, k_i` (2.67)-(2.72).
+#[inline]
+fn body_backward(
+    model: &Model,
+    data: &mut Data,
+    i: usize,
+    tau: &DVector<f64>,
+) -> Result<(), DynamicsError> {
+    let body = &model.bodies[i];
+    // Each arm leaves M-bar_i - U D^-1 U^T in `mbar[i]` (no longer needed) and returns k_i.
+    let k = match &body.joint {
+        Joint::Revolute(ax) | Joint::Prismatic(ax) => {
+            let mbar = &mut data.mbar[i];
+            let u = ax.apply_inertia(mbar);
+            let d = ax.dot_force(&u);
+            if d <= 0.0 || !d.is_finite() {
+                return Err(DynamicsError::NotPositiveDefinite {
+                    index: body.v_index,
+                    pivot: d,
+                });
+            }
+            let dinv = 1.0 / d;
+            let b = &data.bias_acc[i];
+            let fbar = &data.fbar[i];
+            let p = dinv * (tau[body.v_index] - u.dot(b) + ax.dot_force(fbar));
+            let k = mbar.apply(b) + u * p - *fbar;
+            mbar.sub_outer(&u, dinv);
+            data.u[i] = u;
+            data.dinv[i] = dinv;
+            data.p1[i] = p;
+            k
+        }
+        Joint::Fixed => data.mbar[i].apply(&data.bias_acc[i]) - data.fbar[i],
+        Joint::EulerZxz | Joint::Quaternion => {
+            six_dof_backward(data, i, body.v_index, tau, body.parent.is_some())?
+        }
+        Joint::Rotor(_) => {
+            return Err(DynamicsError::Unsupported(
+                "the tree-case O(n) algorithm cannot handle geared rotors",
+            ))
+        }
+    };
+    if let Some(p) = body.parent {
+        let x = &data.x[i];
+        let (head, tail) = data.mbar.split_at_mut(i);
+        tail[0].add_tr_transform_to(x, &mut head[p]);
+        data.fbar[p] -= x.tr_apply_force(&k);
     }
     Ok(())
 }
@@ -140,31 +155,41 @@ fn six_dof_backward(
 
 /// Second forward recursion (Algorithm 2.4): `qddot` into `data.ddq` and body accelerations.
 pub fn forward_pass_2<'d>(model: &Model, data: &'d mut Data) -> &'d DVector<f64> {
-    for (i, body) in model.bodies.iter().enumerate() {
-        let ap = match body.parent {
-            Some(p) => data.x[i].apply_motion(&data.acc[p]),
-            None => Motion::zero(),
-        };
-        let vi = body.v_index;
-        let a = match &body.joint {
-            Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => {
-                let qdd = data.p1[i] - data.dinv[i] * data.u[i].dot(&ap);
-                data.ddq[vi] = qdd;
-                ap + ax.motion(qdd)
-            }
-            Joint::Fixed => ap,
-            Joint::EulerZxz | Joint::Quaternion => {
-                let qdd = match body.parent {
-                    Some(_) => data.p6[i] - data.pi6[i] * ap.to_vector(),
-                    None => data.p6[i],
-                };
-                data.ddq.rows_mut(vi, 6).copy_from(&qdd);
-                ap + Motion::from_vector(&(data.jacobian6[i] * qdd))
-            }
-        };
-        data.acc[i] = a + data.bias_acc[i];
+    for node in &model.nodes {
+        match node.kind {
+            NodeKind::Body(i) => body_forward(model, data, i),
+            NodeKind::Subsystem(s) => subsystem::on::forward(model, data, s),
+        }
     }
     &data.ddq
+}
+
+/// Second forward step of body `i` outside sub-systems: (2.66), (2.34).
+#[inline]
+fn body_forward(model: &Model, data: &mut Data, i: usize) {
+    let body = &model.bodies[i];
+    let ap = match body.parent {
+        Some(p) => data.x[i].apply_motion(&data.acc[p]),
+        None => Motion::zero(),
+    };
+    let vi = body.v_index;
+    let a = match &body.joint {
+        Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => {
+            let qdd = data.p1[i] - data.dinv[i] * data.u[i].dot(&ap);
+            data.ddq[vi] = qdd;
+            ap + ax.motion(qdd)
+        }
+        Joint::Fixed => ap,
+        Joint::EulerZxz | Joint::Quaternion => {
+            let qdd = match body.parent {
+                Some(_) => data.p6[i] - data.pi6[i] * ap.to_vector(),
+                None => data.p6[i],
+            };
+            data.ddq.rows_mut(vi, 6).copy_from(&qdd);
+            ap + Motion::from_vector(&(data.jacobian6[i] * qdd))
+        }
+    };
+    data.acc[i] = a + data.bias_acc[i];
 }
 
 /// The three passes in sequence (Algorithm 2.1).

@@ -181,20 +181,7 @@ impl Jacobians {
 }
 
 /// Column `c` of body `i`'s relative Jacobian `J_i` (2.35) in body coordinates.
-#[inline]
-pub(crate) fn local_column(data: &Data, i: usize, joint: &Joint, c: usize) -> Motion {
-    match joint {
-        Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => ax.motion(1.0),
-        Joint::Fixed => Motion::zero(),
-        Joint::EulerZxz | Joint::Quaternion => {
-            let m = &data.jacobian6[i];
-            Motion::new(
-                Vector3::new(m[(0, c)], m[(1, c)], m[(2, c)]),
-                Vector3::new(m[(3, c)], m[(4, c)], m[(5, c)]),
-            )
-        }
-    }
-}
+pub(crate) use crate::kinematics::joint_column as local_column;
 
 /// Time derivative of column `c` of `J_i` in body coordinates: zero except for the Euler-ZXZ
 /// joint, whose angular block is `J_R(q)` with rate `Jdot_R` (2.42) and whose linear block

@@ -158,6 +158,7 @@ impl ModelBuilder {
             })
             .collect();
         let has_rotors = self.bodies.iter().any(|b| !b.owns_coordinates);
+        let (subsystems, nodes) = crate::subsystem::generate(&self.bodies)?;
         Ok(Model {
             bodies: self.bodies,
             joints,
@@ -166,6 +167,8 @@ impl ModelBuilder {
             gravity: self.gravity,
             dof_parent: self.dof_parent,
             has_rotors,
+            subsystems,
+            nodes,
         })
     }
 

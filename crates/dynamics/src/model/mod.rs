@@ -8,6 +8,7 @@ pub use builder::{BodySpec, ModelBuilder};
 pub use joint::JointModel;
 
 use crate::spatial::{RigidInertia, SpatialTransform};
+use crate::subsystem::{Node, Subsystem};
 use joint::Joint;
 use nalgebra::{DVector, Isometry3, Vector3};
 
@@ -163,6 +164,10 @@ pub struct Model {
     /// Parent array over velocity coordinates (`lambda` of the sparse LTL factorisation).
     pub(crate) dof_parent: Vec<Option<usize>>,
     pub(crate) has_rotors: bool,
+    /// Sub-systems generated from overlapping index sets (2.9).
+    pub(crate) subsystems: Vec<Subsystem>,
+    /// Rewired body list with sub-system nodes (Fig. 2.14).
+    pub(crate) nodes: Vec<Node>,
 }
 
 impl Model {
@@ -219,5 +224,25 @@ impl Model {
     /// Whether some body is a geared rotor (shares its driver's coordinate).
     pub fn has_rotors(&self) -> bool {
         self.has_rotors
+    }
+    /// Sub-systems built automatically from bodies sharing coordinates (section 2.9).
+    pub fn subsystems(&self) -> &[Subsystem] {
+        &self.subsystems
+    }
+    /// Member body names of every sub-system, in sub-system order.
+    pub fn subsystem_names(&self) -> Vec<Vec<&str>> {
+        self.subsystems
+            .iter()
+            .map(|s| {
+                s.members
+                    .iter()
+                    .map(|&m| self.bodies[m].name.as_str())
+                    .collect()
+            })
+            .collect()
+    }
+    /// Rewired body list: bodies outside sub-systems and sub-system nodes (Fig. 2.14).
+    pub fn nodes(&self) -> &[Node] {
+        &self.nodes
     }
 }
