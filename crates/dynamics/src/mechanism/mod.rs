@@ -16,6 +16,12 @@
 //! These definitions are operational: every implementation is checked against central finite
 //! differences of `pose` and `J` along `q_in + qd_in t`.
 
+pub mod ankle;
+pub mod harmonic_drive;
+pub mod jet;
+pub mod knee;
+pub mod vergence;
+
 use nalgebra::{Isometry3, Vector6};
 use thiserror::Error;
 
