@@ -3,7 +3,9 @@
 //! in the standing posture and with the arms close to the thighs. Also the parts (transform
 //! only) and an unpruned baseline (OBB test, then every SSV pair) for comparison. Both pair
 //! policies are measured: `closest` (exact closest pair whenever the enlarged OBBs overlap)
-//! and `within_da` (exact closest pair only when it is closer than d_a).
+//! and `within_da` (exact closest pair only when it is closer than d_a). The update
+//! warm-starts each pair with the previous closest SSV pair; `alternating` switches posture
+//! on every update, so that warm start is (mostly) stale, a worst case for the pruning.
 
 use biped_ssv::format;
 use biped_ssv::segment::closest_ssv_pair_brute_force;
@@ -79,5 +81,25 @@ fn bench_model(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, bench_model);
+/// Updates alternating between two postures (stale warm starts on every update).
+fn bench_alternating(c: &mut Criterion) {
+    let (mut model, postures) = humanoid();
+    for (label, query) in [
+        ("closest", PairQuery::Closest),
+        ("within_da", PairQuery::WithinActivation),
+    ] {
+        model.set_pair_query(query);
+        let mut k = 0usize;
+        c.bench_function(&format!("model_update/alternating/{label}"), |b| {
+            b.iter(|| {
+                k += 1;
+                let poses = &postures[k % postures.len()].1;
+                model.update(black_box(poses)).unwrap();
+                black_box(model.results().first().copied())
+            })
+        });
+    }
+}
+
+criterion_group!(benches, bench_model, bench_alternating);
 criterion_main!(benches);

@@ -4,7 +4,13 @@
 //! functions that take these types never see NaN or infinity and never fail.
 
 use crate::error::SsvError;
-use nalgebra::{Isometry3, Point3};
+use nalgebra::{Isometry3, Matrix3, Point3, Vector3};
+
+/// `rot p + t` (a rigid transform in matrix form).
+#[inline(always)]
+fn affine(rot: &Matrix3<f64>, t: &Vector3<f64>, p: &Point3<f64>) -> Point3<f64> {
+    Point3::from(rot * p.coords + t)
+}
 
 /// Largest accepted |coordinate| and radius: the distance formulas form products of up to four
 /// coordinates, and 1e50 keeps every such product far from overflow (robot models live in
@@ -80,6 +86,16 @@ impl Pss {
     pub fn radius(&self) -> f64 {
         self.radius
     }
+    /// This PSS moved by `x -> rot x + t`, with `rot` a rotation matrix (not validated: the
+    /// caller passes the matrix of a finite rigid pose; cheaper than [`Self::transformed`]
+    /// when many primitives share one pose).
+    #[inline]
+    pub fn transformed_by(&self, rot: &Matrix3<f64>, t: &Vector3<f64>) -> Self {
+        Self {
+            center: affine(rot, t, &self.center),
+            radius: self.radius,
+        }
+    }
     /// This PSS moved by a rigid transform.
     #[inline]
     pub fn transformed(&self, pose: &Isometry3<f64>) -> Self {
@@ -115,6 +131,16 @@ impl Lss {
     #[inline]
     pub fn point_at(&self, s: f64) -> Point3<f64> {
         self.vertices[0] + (self.vertices[1] - self.vertices[0]) * s
+    }
+    /// This LSS moved by `x -> rot x + t`, with `rot` a rotation matrix (not validated: the
+    /// caller passes the matrix of a finite rigid pose; cheaper than [`Self::transformed`]
+    /// when many primitives share one pose).
+    #[inline]
+    pub fn transformed_by(&self, rot: &Matrix3<f64>, t: &Vector3<f64>) -> Self {
+        Self {
+            vertices: self.vertices.map(|v| affine(rot, t, &v)),
+            radius: self.radius,
+        }
     }
     /// This LSS moved by a rigid transform.
     #[inline]
@@ -159,6 +185,16 @@ impl Tss {
         let [v0, v1, v2] = self.vertices;
         v0 + (v1 - v0) * s0 + (v2 - v0) * s1
     }
+    /// This TSS moved by `x -> rot x + t`, with `rot` a rotation matrix (not validated: the
+    /// caller passes the matrix of a finite rigid pose; cheaper than [`Self::transformed`]
+    /// when many primitives share one pose).
+    #[inline]
+    pub fn transformed_by(&self, rot: &Matrix3<f64>, t: &Vector3<f64>) -> Self {
+        Self {
+            vertices: self.vertices.map(|v| affine(rot, t, &v)),
+            radius: self.radius,
+        }
+    }
     /// This TSS moved by a rigid transform.
     #[inline]
     pub fn transformed(&self, pose: &Isometry3<f64>) -> Self {
@@ -196,6 +232,15 @@ impl Ssv {
             Ssv::Point(p) => std::slice::from_ref(&p.center),
             Ssv::Line(l) => &l.vertices,
             Ssv::Triangle(t) => &t.vertices,
+        }
+    }
+    /// This SSV moved by `x -> rot x + t` (see [`Pss::transformed_by`]).
+    #[inline]
+    pub fn transformed_by(&self, rot: &Matrix3<f64>, t: &Vector3<f64>) -> Self {
+        match self {
+            Ssv::Point(p) => Ssv::Point(p.transformed_by(rot, t)),
+            Ssv::Line(l) => Ssv::Line(l.transformed_by(rot, t)),
+            Ssv::Triangle(x) => Ssv::Triangle(x.transformed_by(rot, t)),
         }
     }
     /// This SSV moved by a rigid transform.

@@ -67,8 +67,10 @@ pub(crate) enum Geom<'a> {
     Point,
     /// A line segment.
     Line(&'a Lss),
-    /// A triangle.
+    /// A triangle (its frame is rebuilt if the rule needs it).
     Triangle(&'a Tss),
+    /// A triangle with the frame its distance function already prepared.
+    Frame(&'a TriFrame),
 }
 
 /// Result assembly of eq. (6.11): offsets the primitive points along the unit normal.
@@ -144,10 +146,9 @@ pub(crate) fn edge_to_tri(i: usize, s: f64) -> (f64, f64) {
     }
 }
 
-/// Unit normal of a non-flat triangle, e0 x e1 normalised (computed as the equally oriented
-/// product of its longest edge and the next one); `None` when flat.
-fn triangle_normal(t: &Tss) -> Option<Vector3<f64>> {
-    let f = TriFrame::new(t);
+/// Unit normal of a non-flat triangle, e0 x e1 normalised (computed as e0 x F', see
+/// [`TriFrame`]); `None` when flat.
+fn triangle_normal(f: &TriFrame) -> Option<Vector3<f64>> {
     if f.flat {
         None
     } else {
@@ -164,6 +165,7 @@ fn line_direction(g: Geom) -> Option<Vector3<f64>> {
             let e = boundary_edges(t.vertices());
             e[longest(&e.map(|x| x.norm_squared()))]
         }
+        Geom::Frame(f) => f.e[longest(&f.ee)],
     };
     scaled_unit(&e).map(|(_, u)| u)
 }
@@ -178,10 +180,13 @@ fn perpendicular(e: &Vector3<f64>) -> Vector3<f64> {
 /// The normal rule for c* = 0 (module doc of [`crate::distance`]).
 pub(crate) fn geometric_normal(ga: Geom, gb: Geom) -> Vector3<f64> {
     for g in [gb, ga] {
-        if let Geom::Triangle(t) = g {
-            if let Some(n) = triangle_normal(t) {
-                return n;
-            }
+        let n = match g {
+            Geom::Triangle(t) => triangle_normal(&TriFrame::new(t)),
+            Geom::Frame(f) => triangle_normal(f),
+            _ => None,
+        };
+        if let Some(n) = n {
+            return n;
         }
     }
     let (la, lb) = (line_direction(ga), line_direction(gb));

@@ -8,6 +8,8 @@
 //! from their points, end points over the face from their height), so near-degenerate input
 //! can only make a candidate lose, never report a wrong distance. A flat
 //! triangle has no face candidates: it is the union of its edges (its longest edge).
+//! The piercing test and a segment on one side of the plane with its nearer end point over
+//! the face are decided from the two end-point projections before any edge pair is solved.
 
 use super::assemble::{assemble, clamp01, edge_to_tri, key_index, min_key, Closest, Geom};
 use super::line_line::{segment_params, Seg};
@@ -31,50 +33,44 @@ pub(crate) struct SegTri {
     pub pt: Point3<f64>,
 }
 
-/// Closest pair of segment `p + t u` and the triangle of `f`.
+/// Closest pair of segment `p + t u` and the triangle of `f`: piercing first, then an end
+/// point over the face when the segment lies on one side of the plane (it is then the
+/// closest pair: every point of the segment is at least that far from the plane), else the
+/// three edge pairs against the end points over the face.
 #[inline(always)]
 pub(crate) fn segment_triangle(p: &Point3<f64>, u: &Vector3<f64>, f: &TriFrame) -> SegTri {
-    let seg = Seg::new(*p, *u);
-    let mut ts = [(0.0, 0.0); 3];
-    let mut key = u64::MAX;
-    for (k, tsk) in ts.iter_mut().enumerate() {
-        *tsk = segment_params(&seg, &f.edge(k));
-        let (t, s) = *tsk;
-        key = key.min(min_key(
-            ((f.v[k] - p) + f.e[k] * s - u * t).norm_squared(),
-            k,
-        ));
-    }
-    let kb = key_index(key);
-    let (t, s) = ts[kb];
-    let d2 = ((f.v[kb] - p) + f.e[kb] * s - u * t).norm_squared();
-    let best = SegTri {
-        d2,
-        t,
-        s: edge_to_tri(kb, s),
-        pl: p + u * t,
-        pt: f.v[kb] + f.e[kb] * s,
-    };
     if f.flat {
-        return best;
+        return nearest_edge(p, u, f);
     }
     let q = p + u;
     let (w0, w1) = (f.project(p), f.project(&q));
-    // Piercing (6.46): the end points on strictly opposite sides and the crossing inside.
     let (h0, h1) = (w0.h, w1.h);
     let straddle = ((h0 < 0.0) & (h1 > 0.0)) | ((h0 > 0.0) & (h1 < 0.0));
-    let tx = clamp01(h0 / (h0 - h1));
-    let x = p + u * tx;
-    let wx = f.project(&x);
-    if straddle & wx.inside() {
-        return SegTri {
-            d2: 0.0,
-            t: tx,
-            s: wx.params(),
-            pl: x,
-            pt: x,
+    if straddle {
+        // Piercing (6.46): the end points on strictly opposite sides and the crossing inside.
+        let tx = clamp01(h0 / (h0 - h1));
+        let x = p + u * tx;
+        let wx = f.project(&x);
+        if wx.inside() {
+            return SegTri {
+                d2: 0.0,
+                t: tx,
+                s: wx.params(),
+                pl: x,
+                pt: x,
+            };
+        }
+    } else {
+        let (tv, w, pv) = if h1.abs() < h0.abs() {
+            (1.0, w1, q)
+        } else {
+            (0.0, w0, *p)
         };
+        if w.inside() {
+            return face_point(f, tv, &w, pv);
+        }
     }
+    let best = nearest_edge(p, u, f);
     // End points over the face: squared height h^2/|n|^2.
     let face = |w: &Proj| {
         if w.inside() {
@@ -90,30 +86,64 @@ pub(crate) fn segment_triangle(p: &Point3<f64>, u: &Vector3<f64>, f: &TriFrame) 
         (d0, 0.0, w0, *p)
     };
     if dv < best.d2 {
-        let s = w.params();
-        return SegTri {
-            d2: dv,
-            t: tv,
-            s,
-            pl: pv,
-            pt: f.point_at(s),
-        };
+        return face_point(f, tv, &w, pv);
     }
     best
+}
+
+/// The pair of end point `pv` (segment parameter `tv`) and its projection `w` into the face.
+#[inline(always)]
+fn face_point(f: &TriFrame, tv: f64, w: &Proj, pv: Point3<f64>) -> SegTri {
+    let s = w.params();
+    let pt = f.point_at(s);
+    SegTri {
+        d2: (pt - pv).norm_squared(),
+        t: tv,
+        s,
+        pl: pv,
+        pt,
+    }
+}
+
+/// The nearest of the three segment-edge pairs (branch-free selection).
+#[inline(always)]
+fn nearest_edge(p: &Point3<f64>, u: &Vector3<f64>, f: &TriFrame) -> SegTri {
+    let seg = Seg::new(*p, *u);
+    let mut ts = [(0.0, 0.0); 3];
+    let mut key = u64::MAX;
+    for (k, tsk) in ts.iter_mut().enumerate() {
+        *tsk = segment_params(&seg, &f.edge(k));
+        let (t, s) = *tsk;
+        key = key.min(min_key(
+            ((f.v[k] - p) + f.e[k] * s - u * t).norm_squared(),
+            k,
+        ));
+    }
+    let kb = key_index(key);
+    let (t, s) = ts[kb];
+    let d2 = ((f.v[kb] - p) + f.e[kb] * s - u * t).norm_squared();
+    SegTri {
+        d2,
+        t,
+        s: edge_to_tri(kb, s),
+        pl: p + u * t,
+        pt: f.v[kb] + f.e[kb] * s,
+    }
 }
 
 /// LT: line segment to triangle (6.4.5).
 #[inline]
 pub fn lt(a: &Lss, b: &Tss) -> DistanceResult {
     let [p0, p1] = a.vertices();
-    let r = segment_triangle(p0, &(p1 - p0), &TriFrame::new(b));
+    let f = TriFrame::new(b);
+    let r = segment_triangle(p0, &(p1 - p0), &f);
     let c = Closest {
         a: r.pl,
         b: r.pt,
         param_a: PrimitiveParam::Line(r.t),
         param_b: PrimitiveParam::Triangle(r.s.0, r.s.1),
     };
-    assemble(c, a.radius(), b.radius(), Geom::Line(a), Geom::Triangle(b))
+    assemble(c, a.radius(), b.radius(), Geom::Line(a), Geom::Frame(&f))
 }
 
 #[cfg(test)]

@@ -10,6 +10,11 @@
 //! the edge pairs are solved in structure-of-arrays form ([`super::edge_pairs`]) and all
 //! selections are branch-free arg-mins. A flat triangle has no face candidates: it is the
 //! union of its edges (its longest edge).
+//!
+//! Two cheap certificates end the search early (PQP-style): a triangle entirely on one side
+//! of the other's plane whose nearest vertex projects into the other face is at exactly that
+//! height, and an edge pair whose connecting plane (normal to c*) separates the triangles is
+//! the closest pair. Only when neither holds are all candidates compared.
 
 use super::assemble::{assemble, clamp01, edge_to_tri, Closest, Geom};
 use super::edge_pairs::nearest_edge_pair;
@@ -27,6 +32,9 @@ struct Best {
     pa: Point3<f64>,
     pb: Point3<f64>,
 }
+
+/// Triangle parameters (s0, s1) of the vertices v0, v1, v2.
+const VERTEX: [(f64, f64); 3] = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)];
 
 /// Projections (6.21) of the three vertices of `a` onto the plane of `b`.
 #[inline(always)]
@@ -85,7 +93,6 @@ fn piercing(a: &TriFrame, b: &TriFrame, w: &[Proj; 3], swap: bool) -> Option<Bes
 /// The vertex-face candidates of the vertices of `a` over the (non-flat) face of `b`.
 #[inline(always)]
 fn vertex_face(a: &TriFrame, b: &TriFrame, w: &[Proj; 3], swap: bool, best: &mut Best) {
-    const VERTEX: [(f64, f64); 3] = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)];
     let (mut dv, mut iv) = (f64::INFINITY, 0);
     for (i, wi) in w.iter().enumerate() {
         let d = if wi.inside() {
@@ -109,25 +116,72 @@ fn vertex_face(a: &TriFrame, b: &TriFrame, w: &[Proj; 3], swap: bool, best: &mut
     }
 }
 
-/// The nearest of the nine edge-edge pairs (branch-free selection of the minimum).
+/// The nearest of the nine edge-edge pairs (branch-free selection of the minimum) and its
+/// pair index 3 i + j.
 #[inline(always)]
-fn edge_pairs(a: &TriFrame, b: &TriFrame) -> Best {
+fn edge_pairs(a: &TriFrame, b: &TriFrame) -> (Best, usize) {
     let (d2, ij, s, t) = nearest_edge_pair(a, b);
-    let st = (s, t);
     let (i, j) = (ij / 3, ij % 3);
-    Best {
+    let x = Best {
         d2,
-        sa: edge_to_tri(i, st.0),
-        sb: edge_to_tri(j, st.1),
-        pa: a.v[i] + a.e[i] * st.0,
-        pb: b.v[j] + b.e[j] * st.1,
+        sa: edge_to_tri(i, s),
+        sb: edge_to_tri(j, t),
+        pa: a.v[i] + a.e[i] * s,
+        pb: b.v[j] + b.e[j] * t,
+    };
+    (x, ij)
+}
+
+/// Early exit when `a` lies on one side of the (non-flat) plane of `b`: its vertex nearest
+/// to the plane bounds every point of `a` from below, so if that vertex projects into `b`
+/// the vertex-face pair is the closest pair.
+#[inline(always)]
+fn one_sided_vertex_face(a: &TriFrame, b: &TriFrame, w: &[Proj; 3], swap: bool) -> Option<Best> {
+    let k = nearest_to_plane(w);
+    if b.flat || straddles(w) || !w[k].inside() {
+        return None;
+    }
+    let sb = w[k].params();
+    let x = Best {
+        d2: w[k].h * w[k].h * b.inv_nn,
+        sa: VERTEX[k],
+        sb,
+        pa: a.v[k],
+        pb: b.point_at(sb),
+    };
+    Some(order(x, swap))
+}
+
+/// Index of the vertex with the smallest |height| over the plane.
+#[inline(always)]
+fn nearest_to_plane(w: &[Proj; 3]) -> usize {
+    let h = [w[0].h.abs(), w[1].h.abs(), w[2].h.abs()];
+    let k = if h[1] < h[0] { 1 } else { 0 };
+    if h[2] < h[k] {
+        2
+    } else {
+        k
     }
 }
 
-/// Closest pair of two triangles; a flat triangle contributes only its edges.
+/// Whether the plane through the closest points of an edge pair, normal to c*, separates
+/// the triangles, which proves the pair globally closest. The two end points of each edge
+/// are on their side by the optimality of the edge pair (c* is normal to the edge at an
+/// interior point, points away from the edge at an end point), so only the third vertex of
+/// each triangle is tested.
+#[inline(always)]
+fn separates(a: &TriFrame, b: &TriFrame, ij: usize, x: &Best) -> bool {
+    let c = x.pb - x.pa;
+    let (i, j) = (ij / 3, ij % 3);
+    let (oa, ob) = (a.v[(i + 2) % 3], b.v[(j + 2) % 3]);
+    ((oa - x.pa).dot(&c) <= 0.0) & ((ob - x.pb).dot(&c) >= 0.0)
+}
+
+/// Closest pair of two triangles; a flat triangle contributes only its edges. Cheap exits
+/// first: intersection (piercing edge), a one-sided triangle over the other's face, an edge
+/// pair with a separating plane; otherwise the full enumeration.
 #[inline(always)]
 fn enumerate(a: &TriFrame, b: &TriFrame) -> Best {
-    let mut best = edge_pairs(a, b);
     let (wa, wb) = (project_vertices(a, b), project_vertices(b, a));
     // Non-coplanar triangles can only intersect if each straddles the other's plane (a flat
     // triangle, i.e. a segment, only has to straddle).
@@ -141,6 +195,16 @@ fn enumerate(a: &TriFrame, b: &TriFrame) -> Best {
         if let Some(x) = piercing(b, a, &wb, true) {
             return x;
         }
+    }
+    if let Some(x) = one_sided_vertex_face(a, b, &wa, false) {
+        return x;
+    }
+    if let Some(x) = one_sided_vertex_face(b, a, &wb, true) {
+        return x;
+    }
+    let (mut best, ij) = edge_pairs(a, b);
+    if separates(a, b, ij, &best) {
+        return best;
     }
     if !b.flat {
         vertex_face(a, b, &wa, false, &mut best);
@@ -166,8 +230,8 @@ pub fn tt(a: &Tss, b: &Tss) -> DistanceResult {
         c,
         a.radius(),
         b.radius(),
-        Geom::Triangle(a),
-        Geom::Triangle(b),
+        Geom::Frame(&fa),
+        Geom::Frame(&fb),
     )
 }
 

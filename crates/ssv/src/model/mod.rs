@@ -3,11 +3,12 @@
 //!
 //! [`CollisionModel::update`] takes the body poses, moves every segment that takes part in a
 //! pair (each SSV is transformed once per update, not per pair) and evaluates every pair with
-//! the enlarged-OBB pre-check and the exact, pruned closest-pair search; [`PairQuery`]
+//! the enlarged-OBB pre-check and the exact, pruned closest-pair search (warm-started with
+//! the previous update's closest SSV pair of each segment pair); [`PairQuery`]
 //! chooses whether pairs farther than `d_a` still report their closest pair. All buffers are
 //! allocated at construction; an update does not allocate.
 
-use crate::segment::{segment_pair_query, ClosestPair, PairDistance, PairQuery, Segment};
+use crate::segment::{segment_pair_query_hinted, ClosestPair, PairDistance, PairQuery, Segment};
 use nalgebra::Isometry3;
 
 /// What can be wrong when building or updating a collision model.
@@ -201,7 +202,9 @@ impl CollisionModel {
         let (d_a, query) = (self.activation_distance, self.query);
         for (result, pair) in self.results.iter_mut().zip(&self.pairs) {
             let (a, b) = (&self.segments[pair.a], &self.segments[pair.b]);
-            *result = segment_pair_query(a, b, d_a, query);
+            // Temporal coherence: last update's closest SSV pair is evaluated first.
+            let hint = result.computed().map(|c| (c.ssv_a, c.ssv_b));
+            *result = segment_pair_query_hinted(a, b, d_a, query, hint);
         }
     }
 

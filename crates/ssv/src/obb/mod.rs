@@ -62,6 +62,16 @@ impl Obb {
         }
     }
 
+    /// This box moved by `x -> rot x + t` (`rot` the rotation matrix of a rigid pose).
+    #[inline]
+    pub(crate) fn transformed_by(&self, rot: &Matrix3<f64>, t: &Vector3<f64>) -> Self {
+        Self {
+            center: Point3::from(rot * self.center.coords + t),
+            axes: rot * self.axes,
+            half_extents: self.half_extents,
+        }
+    }
+
     /// The mirror image of the box about a coordinate plane (axes kept right-handed).
     pub fn reflected(&self, plane: MirrorPlane) -> Self {
         let k = plane.normal_axis();

@@ -13,6 +13,7 @@ mod sphere;
 mod transform;
 
 pub use mirror::{MirrorPlane, UnknownPlane};
+pub(crate) use pair::segment_pair_query_hinted;
 pub use pair::{
     closest_ssv_pair, closest_ssv_pair_brute_force, closest_ssv_pair_brute_force_with,
     closest_ssv_pair_with, segment_pair_distance, segment_pair_query, ClosestPair, PairDistance,
@@ -129,12 +130,12 @@ impl Segment {
     pub fn set_pose(&mut self, pose: &Isometry3<f64>) {
         let m = RigidMatrix::new(pose);
         for (w, s) in self.world_ssvs.iter_mut().zip(&self.ssvs) {
-            *w = s.transformed(pose);
+            *w = s.transformed_by(&m.rot, &m.t);
         }
         for (w, s) in self.world_spheres.iter_mut().zip(&self.spheres) {
             w.center = m.point(&s.center);
         }
-        self.world_obb = self.obb.transformed(pose);
+        self.world_obb = self.obb.transformed_by(&m.rot, &m.t);
     }
 
     /// The whole segment mirrored about a body-frame plane: the opposite-side version (6.6.1).

@@ -71,6 +71,20 @@ pub fn segment_pair_query(
     activation_distance: f64,
     query: PairQuery,
 ) -> PairDistance {
+    segment_pair_query_hinted(a, b, activation_distance, query, None)
+}
+
+/// [`segment_pair_query`] evaluating the SSV pair `hint` first (e.g. the closest pair of the
+/// previous update: temporal coherence makes it the likely winner, so the bounds prune
+/// nearly all others). The result does not depend on the hint, only the work does.
+#[inline]
+pub(crate) fn segment_pair_query_hinted(
+    a: &Segment,
+    b: &Segment,
+    activation_distance: f64,
+    query: PairQuery,
+    hint: Option<(usize, usize)>,
+) -> PairDistance {
     let margin = 0.5 * activation_distance;
     if !a.world_obb().overlaps(b.world_obb(), margin) {
         return PairDistance::Beyond;
@@ -79,7 +93,7 @@ pub fn segment_pair_query(
         PairQuery::Closest => f64::INFINITY,
         PairQuery::WithinActivation => activation_distance,
     };
-    match closest_ssv_pair_with(a, b, cutoff, distance) {
+    match search(a, b, cutoff, &mut distance, hint) {
         Some(c) => PairDistance::Computed(c),
         None => PairDistance::Beyond,
     }
@@ -107,8 +121,24 @@ pub fn closest_ssv_pair_with<F>(
 where
     F: FnMut(&Ssv, &Ssv) -> DistanceResult,
 {
-    let cols = Columns::new(a, b, cutoff);
-    if cols.is_empty() {
+    search(a, b, cutoff, &mut dist, None)
+}
+
+/// The pruned search: the hint (or, for an unbounded search, the pair with the smallest
+/// bounds) first, then every pair whose bounds do not exclude the best so far.
+#[inline(always)]
+fn search<F>(
+    a: &Segment,
+    b: &Segment,
+    cutoff: f64,
+    dist: &mut F,
+    hint: Option<(usize, usize)>,
+) -> Option<ClosestPair>
+where
+    F: FnMut(&Ssv, &Ssv) -> DistanceResult,
+{
+    let cols = Columns::new(a, b);
+    if cols.all_excluded(cutoff) {
         return None;
     }
     let (wa, wb) = (a.world_ssvs(), b.world_ssvs());
@@ -125,10 +155,10 @@ where
             });
         }
     };
-    let seed = if cutoff == f64::INFINITY {
-        bounds::seed(a, b, &cols)
-    } else {
-        None
+    let seed = match hint {
+        Some((i, j)) if i < wa.len() && j < wb.len() => Some((i, j)),
+        _ if cutoff == f64::INFINITY => bounds::seed(a, b, &cols),
+        _ => None,
     };
     if let Some((i, j)) = seed {
         consider(i, j, &mut best_d);
@@ -138,10 +168,10 @@ where
         if bounds::excludes(row_sq, best_d) {
             continue;
         }
-        for (j, col_sq) in cols.iter() {
-            if bounds::excludes(col_sq, best_d)
+        for j in 0..wb.len() {
+            if bounds::excludes(cols.bound_sq(j), best_d)
                 || seed == Some((i, j))
-                || bounds::pair_excludes(a, b, i, &row, j, best_d)
+                || bounds::pair_excludes(a, b, &cols, i, &row, j, best_d)
             {
                 continue;
             }

@@ -6,8 +6,10 @@ use nalgebra::{Isometry3, Matrix3, Point3, Vector3};
 /// A pose as `x -> R x + t`.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct RigidMatrix {
-    rot: Matrix3<f64>,
-    t: Vector3<f64>,
+    /// Rotation matrix R.
+    pub rot: Matrix3<f64>,
+    /// Translation t.
+    pub t: Vector3<f64>,
 }
 
 impl RigidMatrix {
