@@ -25,6 +25,9 @@
 //! rotor twist (3.19)-(3.21)); when off (the thesis's simplification `e_z = const`), the axis is
 //! frozen at its direction for `q = q_ref`, the nut moves along that fixed axis by `l_screw`
 //! (so it meets `A` exactly only at `q_ref`), and the rotor twist is the pure spin (3.8)-(3.11).
+//! The housing's body y component of the angular velocity is `d theta / dt`, `theta` the angle
+//! of `r_screw` about `+t_z`; the thesis's `alpha = atan(r_x / r_y)` (3.15) is measured the
+//! other way (`alpha_dot = -theta_dot` for `r_y < 0`), while (3.17) `r x rdot / l^2` is `theta_dot`.
 //! Derivatives are exact, from [`super::jet`]; (3.6)'s numerator is read as
 //! `rdot.rdot + r.rddot - ldot^2` (the extracted text drops the square).
 

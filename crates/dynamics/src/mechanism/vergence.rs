@@ -16,6 +16,10 @@
 //! - motor angle `N_verg (phi_lever - phi_0)` with `phi_0 = phi_lever(0)` (3.43).
 //!
 //! The derivative (3.44)-(3.45) (and the second derivative) are exact, via [`super::jet`].
+//! Differentiating (3.41) by hand gives the numerator
+//! `2 r_b,z (r_a,x - r_b,x) (grad r_b)_x + (s - 2 r_b,z^2) (grad r_b)_z`; the extracted (3.44)
+//! shows `- s (grad r_b)_z` instead (it drops `ds/dq`'s `r_b,z` term and the sign). The tests
+//! check the hand-derived form and finite differences.
 
 use super::jet::{bad_param, seed_inputs, SJet, VJet};
 use super::MechanismError;
