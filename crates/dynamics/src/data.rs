@@ -71,6 +71,8 @@ pub struct Data {
     pub(crate) sub_b: Vec<[Force; MAX_SUBSYSTEM_DOF]>,
     /// `p_S` (2.68 for sub-systems), per sub-system.
     pub(crate) sub_p: Vec<[f64; MAX_SUBSYSTEM_DOF]>,
+    /// Body whose mechanism failed in the last kinematics pass (reported as an error).
+    pub(crate) mechanism_fault: Option<usize>,
     /// Generalized accelerations (output of forward dynamics).
     pub ddq: DVector<f64>,
     /// Generalized forces (output of inverse dynamics).
@@ -128,6 +130,7 @@ impl Data {
             sub_l: vec![[[0.0; MAX_SUBSYSTEM_DOF]; MAX_SUBSYSTEM_DOF]; ns],
             sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
+            mechanism_fault: None,
             ddq: DVector::zeros(nv),
             tau: DVector::zeros(nv),
             mass: DMatrix::zeros(nv, nv),

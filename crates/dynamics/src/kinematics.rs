@@ -2,10 +2,12 @@
 //! every algorithm of the crate, and the public forward-kinematics entry points.
 
 use crate::check;
+use crate::mechanism::{Coupling, MAX_COUPLED};
 use crate::model::joint::{
     euler_zxz_jacobian, euler_zxz_jr_dot_qd, euler_zxz_rotation, quaternion_rotation,
     six_dof_motion, Joint,
 };
+use crate::model::{Body, JointModel};
 use crate::spatial::{Force, Motion, SpatialTransform, Wrench};
 use crate::{Data, DynamicsError, Model};
 use nalgebra::{DVector, Matrix3, Vector3, Vector6};
@@ -28,6 +30,7 @@ pub fn forward_kinematics(
     for i in 0..model.nbodies() {
         body_kinematics(model, data, i, q, Some(v));
     }
+    take_fault(data)?;
     propagate_accelerations(model, data, Some(a));
     Ok(())
 }
@@ -43,7 +46,7 @@ pub fn update_placements(
     for i in 0..model.nbodies() {
         body_kinematics(model, data, i, q, None);
     }
-    Ok(())
+    take_fault(data)
 }
 
 /// `a_i = C_i a_p(i) + J_i qddot_i + b_i` (2.34) for all bodies; `qdd = None` means zero.
@@ -54,7 +57,7 @@ pub(crate) fn propagate_accelerations(model: &Model, data: &mut Data, qdd: Optio
             a += data.x[i].apply_motion(&data.acc[p]);
         }
         if let Some(qdd) = qdd {
-            a += relative_motion(data, i, &body.joint, body.v_index, qdd);
+            a += relative_motion(data, i, body, qdd);
         }
         data.acc[i] = a;
     }
@@ -62,14 +65,16 @@ pub(crate) fn propagate_accelerations(model: &Model, data: &mut Data, qdd: Optio
 
 /// `J_i w_i` for the slice of a generalized vector `w` (velocity or acceleration) of body `i`.
 #[inline]
-pub(crate) fn relative_motion(
-    data: &Data,
-    i: usize,
-    joint: &Joint,
-    vi: usize,
-    w: &DVector<f64>,
-) -> Motion {
-    match joint {
+pub(crate) fn relative_motion(data: &Data, i: usize, body: &Body, w: &DVector<f64>) -> Motion {
+    let vi = body.v_index;
+    match &body.joint {
+        Joint::Coupled => {
+            let mut m = Motion::zero();
+            for (c, &k) in body.v_set.as_slice().iter().enumerate() {
+                m += joint_column(data, i, &body.joint, c) * w[k];
+            }
+            m
+        }
         Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => ax.motion(w[vi]),
         Joint::Fixed => Motion::zero(),
         Joint::EulerZxz | Joint::Quaternion => six_dof_motion(&data.jacobian6[i], &six(w, vi)),
@@ -82,7 +87,7 @@ pub(crate) fn joint_column(data: &Data, i: usize, joint: &Joint, c: usize) -> Mo
     match joint {
         Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => ax.motion(1.0),
         Joint::Fixed => Motion::zero(),
-        Joint::EulerZxz | Joint::Quaternion => {
+        Joint::EulerZxz | Joint::Quaternion | Joint::Coupled => {
             let m = &data.jacobian6[i];
             Motion::new(
                 Vector3::new(m[(0, c)], m[(1, c)], m[(2, c)]),
@@ -97,12 +102,17 @@ pub(crate) fn joint_column(data: &Data, i: usize, joint: &Joint, c: usize) -> Mo
 pub(crate) fn add_projected_force(
     data: &Data,
     i: usize,
-    joint: &Joint,
-    vi: usize,
+    body: &Body,
     f: &Force,
     out: &mut DVector<f64>,
 ) {
-    match joint {
+    let vi = body.v_index;
+    match &body.joint {
+        Joint::Coupled => {
+            for (c, &k) in body.v_set.as_slice().iter().enumerate() {
+                out[k] += joint_column(data, i, &body.joint, c).dot(f);
+            }
+        }
         Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => out[vi] += ax.dot_force(f),
         Joint::Fixed => {}
         Joint::EulerZxz | Joint::Quaternion => {
@@ -146,6 +156,7 @@ fn joint_kinematics(
             (x, rel, Motion::zero())
         }
         Joint::Fixed => (*pl, Motion::zero(), Motion::zero()),
+        Joint::Coupled => coupled_kinematics(body, data, i, q, v),
         Joint::EulerZxz => {
             let t = Vector3::new(q[qi], q[qi + 1], q[qi + 2]);
             let (phi, theta, psi) = (q[qi + 3], q[qi + 4], q[qi + 5]);
@@ -177,6 +188,54 @@ fn joint_kinematics(
                 Motion::new(Vector3::zeros(), ang.cross(&lin)),
             )
         }
+    }
+}
+
+/// Relative kinematics of a coupled part from its mechanism (see [`crate::mechanism`]): the
+/// Jacobian columns go to `jacobian6[i]`; the joint bias adds `omega_rel x v_rel` to the
+/// mechanism's component-wise `Jdot qd` (the frame rotates while `v_rel` is expressed in it).
+/// A mechanism error leaves the placement and records the body in `mechanism_fault`.
+fn coupled_kinematics(
+    body: &Body,
+    data: &mut Data,
+    i: usize,
+    q: &DVector<f64>,
+    v: Option<&DVector<f64>>,
+) -> (SpatialTransform, Motion, Motion) {
+    let JointModel::Coupled { mechanism, .. } = &body.joint_model else {
+        return (body.placement_x, Motion::zero(), Motion::zero());
+    };
+    let n = body.v_set.len();
+    let (mut qin, mut qdin) = ([0.0; MAX_COUPLED], [0.0; MAX_COUPLED]);
+    for k in 0..n {
+        qin[k] = q[body.q_set.as_slice()[k]];
+        qdin[k] = v.map_or(0.0, |v| v[body.v_set.as_slice()[k]]);
+    }
+    let m = match mechanism.motion(&qin[..n], &qdin[..n]) {
+        Ok(m) if m.pose.translation.vector.iter().all(|x| x.is_finite()) => m,
+        _ => {
+            data.mechanism_fault = Some(i);
+            return (body.placement_x, Motion::zero(), Motion::zero());
+        }
+    };
+    let x = SpatialTransform::from_pose(&(body.placement * m.pose));
+    let mut rel = Motion::zero();
+    for (c, (col, qd)) in m.jacobian.iter().zip(&qdin).take(n).enumerate() {
+        data.jacobian6[i].set_column(c, col);
+        rel += Motion::from_vector(col) * *qd;
+    }
+    let mut cj = Motion::from_vector(&m.bias);
+    cj.lin += rel.ang.cross(&rel.lin);
+    (x, rel, cj)
+}
+
+/// Error if a mechanism failed during the last kinematics pass (clears the record).
+pub(crate) fn take_fault(data: &mut Data) -> Result<(), DynamicsError> {
+    match data.mechanism_fault.take() {
+        None => Ok(()),
+        Some(_) => Err(DynamicsError::Unsupported(
+            "a coupled part's mechanism input lies outside its assembly range",
+        )),
     }
 }
 

@@ -108,6 +108,10 @@ proptest! {
                 JointModel::GearedRotor { axis, ratio, .. } => Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(axis, ratio * q[qi])),
                 JointModel::Prismatic { axis } => Isometry3::from_parts(Translation3::from(axis.into_inner() * q[qi]), UnitQuaternion::identity()),
                 JointModel::Fixed => Isometry3::identity(),
+                JointModel::Coupled { mechanism, inputs } => {
+                    let qin: Vec<f64> = inputs.iter().map(|&b| q[model.bodies()[b].q_index()]).collect();
+                    biped_dynamics::mechanism::Coupling::motion(mechanism, &qin, &vec![0.0; qin.len()]).unwrap().pose
+                }
                 JointModel::FreeEulerZxz => {
                     let r = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), q[qi + 3])
                         * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), q[qi + 4])

@@ -40,6 +40,7 @@ pub fn center_of_mass(
         let vel = &data.vel[i];
         momentum += rot * (vel.lin + vel.ang.cross(&c)) * m;
     }
+    crate::kinematics::take_fault(data)?;
     if mass <= 0.0 {
         return Err(JacobianError::ZeroMass);
     }

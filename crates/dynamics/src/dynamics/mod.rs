@@ -6,7 +6,7 @@ mod rnea;
 mod solve;
 
 use crate::check;
-use crate::kinematics::{body_kinematics, first_forward};
+use crate::kinematics::{body_kinematics, first_forward, take_fault};
 use crate::spatial::Wrench;
 use crate::{Data, DynamicsError, Model};
 use nalgebra::{DMatrix, DVector};
@@ -42,6 +42,7 @@ pub fn forward_dynamics<'d>(
             check::vector("tau", tau, model.nv())?;
             check::wrenches(model, fext)?;
             first_forward(model, data, q, v, fext);
+            take_fault(data)?;
             rnea::rnea_from_kinematics(model, data, None, true);
             crba::crba(model, data);
             data.factor.copy_from(&data.mass);
@@ -73,6 +74,7 @@ pub fn mass_matrix<'d>(
     for i in 0..model.nbodies() {
         body_kinematics(model, data, i, q, None);
     }
+    take_fault(data)?;
     crba::crba(model, data);
     Ok(&data.mass)
 }
@@ -92,6 +94,7 @@ pub fn inverse_dynamics<'d>(
     check::vector("a", a, model.nv())?;
     check::wrenches(model, fext)?;
     first_forward(model, data, q, v, fext);
+    take_fault(data)?;
     rnea::rnea_from_kinematics(model, data, Some(a), false);
     Ok(&data.tau)
 }

@@ -14,7 +14,7 @@
 
 use super::solve::check_pivot;
 use crate::check;
-use crate::kinematics::{first_forward, six};
+use crate::kinematics::{first_forward, six, take_fault};
 use crate::model::joint::Joint;
 use crate::spatial::{ArticulatedInertia, Force, Motion, Wrench};
 use crate::subsystem::{self, NodeKind};
@@ -35,6 +35,7 @@ pub fn forward_pass_1(
     check::vector("v", v, model.nv())?;
     check::wrenches(model, fext)?;
     first_forward(model, data, q, v, fext);
+    take_fault(data)?;
     for (i, body) in model.bodies.iter().enumerate() {
         data.mbar[i] = body.inertia.to_articulated();
         data.fbar[i] = data.force[i];
@@ -99,9 +100,9 @@ fn body_backward(
         Joint::EulerZxz | Joint::Quaternion => {
             six_dof_backward(data, i, body.v_index, tau, body.parent.is_some())?
         }
-        Joint::Rotor(_) => {
+        Joint::Rotor(_) | Joint::Coupled => {
             return Err(DynamicsError::Unsupported(
-                "the tree-case O(n) algorithm cannot handle geared rotors",
+                "a coupled body outside a sub-system (the model was not built by ModelBuilder)",
             ))
         }
     };
@@ -179,7 +180,7 @@ fn body_forward(model: &Model, data: &mut Data, i: usize) {
             data.ddq[vi] = qdd;
             ap + ax.motion(qdd)
         }
-        Joint::Fixed => ap,
+        Joint::Fixed | Joint::Coupled => ap,
         Joint::EulerZxz | Joint::Quaternion => {
             let qdd = match body.parent {
                 Some(_) => data.p6[i] - data.pi6[i] * ap.to_vector(),

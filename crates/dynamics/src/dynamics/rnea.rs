@@ -25,7 +25,7 @@ pub(crate) fn rnea_from_kinematics(
     for i in (0..model.nbodies()).rev() {
         let body = &model.bodies[i];
         let f = data.fnet[i];
-        add_projected_force(data, i, &body.joint, body.v_index, &f, &mut out);
+        add_projected_force(data, i, body, &f, &mut out);
         if let Some(p) = body.parent {
             data.fnet[p] += data.x[i].tr_apply_force(&f);
         }

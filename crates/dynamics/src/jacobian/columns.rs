@@ -9,7 +9,7 @@ use crate::check;
 use crate::kinematics::body_kinematics;
 use crate::model::joint::Joint;
 use crate::spatial::{Motion, SpatialTransform};
-use crate::{Data, Model};
+use crate::{Data, DynamicsError, Model};
 use nalgebra::{DVector, Matrix3, Vector3};
 
 /// Preallocated world-frame Jacobian columns of one model (the shared input of all Jacobians).
@@ -109,10 +109,22 @@ impl Jacobians {
     ) -> Result<(), JacobianError> {
         self.check_inputs(model, data, q, v)?;
         let rates = if derivatives { v } else { None };
+        if rates.is_some()
+            && model
+                .bodies
+                .iter()
+                .any(|b| matches!(b.joint, Joint::Coupled))
+        {
+            return Err(DynamicsError::Unsupported(
+                "Jacobian time derivatives of coupled parts (the mechanism gives only Jdot qd)",
+            )
+            .into());
+        }
         for i in 0..model.nbodies() {
             body_kinematics(model, data, i, q, v);
             self.store_body(model, data, i, q, v.is_some(), rates);
         }
+        crate::kinematics::take_fault(data)?;
         self.have_columns = true;
         self.have_derivatives = rates.is_some();
         Ok(())

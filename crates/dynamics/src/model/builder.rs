@@ -1,7 +1,8 @@
 //! Validating model builder: bodies are added parent-first, coordinates are assigned in order.
 
 use super::joint::{Joint, JointModel};
-use super::{Body, BodyId, IndexSet, JointInfo, Model};
+use super::{Body, BodyId, IndexSet, JointInfo, Mechanism, Model, MAX_INDEX_SET};
+use crate::mechanism::{Coupling, MAX_COUPLED};
 use crate::spatial::{RigidInertia, SpatialTransform};
 use crate::ModelError;
 use nalgebra::{Isometry3, Unit, Vector3};
@@ -101,6 +102,8 @@ impl ModelBuilder {
         } else {
             parent_chain
         });
+        let q_set = self.coupled_set(&joint_model, |b| b.q_index, q_index, nq_set);
+        let v_set = self.coupled_set(&joint_model, |b| b.v_index, v_index, nv_set);
         self.body_names.insert(spec.name.clone());
         self.joint_names.insert(spec.joint_name.clone());
         self.bodies.push(Body {
@@ -116,8 +119,8 @@ impl ModelBuilder {
             inertia: spec.inertia,
             q_index,
             v_index,
-            q_set: IndexSet::contiguous(q_index, nq_set),
-            v_set: IndexSet::contiguous(v_index, nv_set),
+            q_set,
+            v_set,
             owns_coordinates: owns,
         });
         Ok(id)
@@ -196,12 +199,33 @@ impl ModelBuilder {
         Ok(())
     }
 
+    /// Index set of a coupled part: its inputs' coordinates; otherwise `start..start + len`.
+    fn coupled_set(
+        &self,
+        joint: &JointModel,
+        index: impl Fn(&Body) -> usize,
+        start: usize,
+        len: usize,
+    ) -> IndexSet {
+        let JointModel::Coupled { inputs, .. } = joint else {
+            return IndexSet::contiguous(start, len);
+        };
+        let mut idx = [0; MAX_INDEX_SET];
+        for (slot, &b) in idx.iter_mut().zip(inputs) {
+            *slot = index(&self.bodies[b]);
+        }
+        IndexSet::from_slice(&idx[..inputs.len()])
+    }
+
     /// Index set (2.26) of a new body: own fresh coordinates, or its driver's for a rotor.
     fn index_set(
         &self,
         spec: &BodySpec,
         joint: &JointModel,
     ) -> Result<(usize, usize, bool), ModelError> {
+        if let JointModel::Coupled { mechanism, inputs } = joint {
+            return self.coupled_index_set(spec, mechanism, inputs);
+        }
         let JointModel::GearedRotor { driver, .. } = joint else {
             return Ok((self.nq, self.nv, true));
         };
@@ -224,6 +248,61 @@ impl ModelBuilder {
             }
         }
         Ok((d.q_index, d.v_index, false))
+    }
+
+    /// Validates the inputs of a coupled part: existing one-DoF bodies, as many as the
+    /// mechanism reads, whose coordinates lie on one path of the DoF tree together with the
+    /// part's parent (so the mass matrix keeps the sparsity pattern of `lambda`).
+    fn coupled_index_set(
+        &self,
+        spec: &BodySpec,
+        mechanism: &Mechanism,
+        inputs: &[BodyId],
+    ) -> Result<(usize, usize, bool), ModelError> {
+        let bad = |driver: usize, reason| ModelError::BadDriver {
+            body: spec.name.clone(),
+            driver,
+            reason,
+        };
+        if inputs.is_empty() || inputs.len() > MAX_COUPLED || inputs.len() != mechanism.n_inputs() {
+            return Err(bad(
+                inputs.len(),
+                "number of inputs differs from the mechanism's (or exceeds MAX_COUPLED)",
+            ));
+        }
+        let mut dofs = [0; MAX_COUPLED + 1];
+        for (k, &d) in inputs.iter().enumerate() {
+            let body = self
+                .bodies
+                .get(d)
+                .ok_or(bad(d, "no such body (inputs must precede the part)"))?;
+            if !matches!(body.joint, Joint::Revolute(_) | Joint::Prismatic(_))
+                || !body.owns_coordinates
+            {
+                return Err(bad(d, "input joint is not revolute or prismatic"));
+            }
+            if inputs[..k].contains(&d) {
+                return Err(bad(d, "input listed twice"));
+            }
+            dofs[k] = body.v_index;
+        }
+        let mut n = inputs.len();
+        if let Some(t) = spec.parent.and_then(|p| self.chain_dof[p]) {
+            dofs[n] = t;
+            n += 1;
+        }
+        let dofs = &mut dofs[..n];
+        dofs.sort_unstable();
+        for w in dofs.windows(2) {
+            if !self.dof_is_ancestor(w[0], w[1]) {
+                return Err(bad(
+                    inputs[0],
+                    "inputs and parent are not on one path to the root",
+                ));
+            }
+        }
+        let first = &self.bodies[inputs[0]];
+        Ok((first.q_index, first.v_index, false))
     }
 
     /// True if DoF `a` is DoF `b` or one of its ancestors in the DoF tree.

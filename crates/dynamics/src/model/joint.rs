@@ -4,6 +4,7 @@
 //! relative to the joint frame (which the placement fixes in the parent body frame, the frame
 //! `k'` of Fig. 2.9). The index set of a geared rotor is its driver's, i.e. shared.
 
+use super::coupling::Mechanism;
 use crate::spatial::{Axis, JointAxis, Motion, SubspaceKind};
 use crate::BodyId;
 use nalgebra::{Matrix3, Matrix6, Unit, UnitQuaternion, Vector3};
@@ -38,6 +39,16 @@ pub enum JointModel {
         /// Body whose (one-DoF) joint coordinate drives the rotor.
         driver: BodyId,
     },
+    /// Coupled part (issue item 1): relative motion `mechanism(q_in)` where `q_in` are the
+    /// joint coordinates of the one-DoF bodies `inputs`; no own coordinates (its index set
+    /// (2.26) is the inputs'), so it ends up in a sub-system (2.9). The geared rotor is the
+    /// linear one-input case.
+    Coupled {
+        /// Closed-form mechanism giving pose, Jacobian and bias relative to the joint frame.
+        mechanism: Mechanism,
+        /// Input bodies (revolute or prismatic), in the mechanism's input order.
+        inputs: Vec<BodyId>,
+    },
 }
 
 impl JointModel {
@@ -45,7 +56,7 @@ impl JointModel {
     pub fn nq(&self) -> usize {
         match self {
             JointModel::Revolute { .. } | JointModel::Prismatic { .. } => 1,
-            JointModel::Fixed | JointModel::GearedRotor { .. } => 0,
+            JointModel::Fixed | JointModel::GearedRotor { .. } | JointModel::Coupled { .. } => 0,
             JointModel::FreeEulerZxz => 6,
             JointModel::FreeQuaternion => 7,
         }
@@ -55,7 +66,7 @@ impl JointModel {
     pub fn nv(&self) -> usize {
         match self {
             JointModel::Revolute { .. } | JointModel::Prismatic { .. } => 1,
-            JointModel::Fixed | JointModel::GearedRotor { .. } => 0,
+            JointModel::Fixed | JointModel::GearedRotor { .. } | JointModel::Coupled { .. } => 0,
             JointModel::FreeEulerZxz | JointModel::FreeQuaternion => 6,
         }
     }
@@ -76,6 +87,8 @@ pub(crate) enum Joint {
     Quaternion,
     /// Geared rotor: `S = [N axis; 0]` on the driver's coordinate.
     Rotor(JointAxis),
+    /// Coupled part; the mechanism lives in the body's [`JointModel::Coupled`].
+    Coupled,
 }
 
 impl Joint {
@@ -97,6 +110,7 @@ impl Joint {
             JointModel::GearedRotor { axis, ratio, .. } => {
                 Joint::Rotor(one(axis, SubspaceKind::Angular, *ratio))
             }
+            JointModel::Coupled { .. } => Joint::Coupled,
         }
     }
 }

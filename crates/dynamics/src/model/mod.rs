@@ -2,9 +2,11 @@
 //! brother links (section 2.4.1), joints and their coordinate index sets (2.26).
 
 mod builder;
+pub mod coupling;
 pub(crate) mod joint;
 
 pub use builder::{BodySpec, ModelBuilder};
+pub use coupling::{FourBar, LinearCoupling, Mechanism};
 pub use joint::JointModel;
 
 use crate::spatial::{RigidInertia, SpatialTransform};
@@ -53,6 +55,14 @@ impl IndexSet {
             idx,
             len: len.min(MAX_INDEX_SET),
         }
+    }
+
+    /// The given indices in column order (`len <= MAX_INDEX_SET`).
+    pub(crate) fn from_slice(indices: &[usize]) -> Self {
+        let mut idx = [0; MAX_INDEX_SET];
+        let len = indices.len().min(MAX_INDEX_SET);
+        idx[..len].copy_from_slice(&indices[..len]);
+        Self { idx, len }
     }
 
     /// The indices in column order.
