@@ -35,6 +35,12 @@ mechanisms! {
     Linear(LinearCoupling),
     /// Coupler link of a planar four-bar driven by its crank angle (test mechanism).
     FourBar(FourBar),
+    /// Harmonic Drive motor rotor (3.1)-(3.2).
+    HarmonicDrive(crate::mechanism::harmonic_drive::HarmonicDriveRotor),
+    /// Part of the knee roller-screw drive (3.3)-(3.21).
+    Knee(crate::mechanism::knee::KneeCoupling),
+    /// Part of the ankle drive with two spatial slider-cranks (3.22)-(3.37).
+    Ankle(crate::mechanism::ankle::AnkleCoupling),
 }
 
 /// Rotation about `axis` by `sum_k ratios[k] q_k`; with one input this is the geared rotor

@@ -10,6 +10,9 @@ use crate::BodyId;
 use nalgebra::{Matrix3, Matrix6, Unit, UnitQuaternion, Vector3};
 
 /// Joint connecting a body to its parent (public model description).
+// Mechanisms are stored inline (no Box) so coupled-part kinematics read them without a
+// pointer chase; models hold one joint per body, so the size difference is harmless.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum JointModel {
     /// Rotation about `axis` (joint frame) through the joint frame origin, (2.45)-(2.46).
