@@ -29,5 +29,5 @@ pub use error::{DynamicsError, ModelError};
 pub use jacobian::{JacobianError, JacobianFrame, Jacobians};
 pub use kinematics::{forward_kinematics, update_placements};
 pub use model::{Body, BodyId, BodySpec, IndexSet, JointInfo, JointModel, Model, ModelBuilder};
-pub use subsystem::{Node, NodeKind, Subsystem};
 pub use spatial::{Force, Motion, RigidInertia, SpatialTransform, Wrench};
+pub use subsystem::{Node, NodeKind, Subsystem};
