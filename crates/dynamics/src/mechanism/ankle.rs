@@ -125,9 +125,9 @@ pub struct AnkleDrive {
 /// Per-actuator jets of one evaluation.
 struct Loop {
     /// Nut travel `l_i`.
-    travel: SJet,
+    travel: SJet<2>,
     /// Foot ball centre `F_i` (shank frame).
-    foot_ball: VJet,
+    foot_ball: VJet<2>,
 }
 
 impl AnkleDrive {
@@ -200,7 +200,7 @@ impl AnkleDrive {
     }
 
     /// Closes loop `i` (3.23)-(3.29) at the input jets `q = [q_flx, q_add]`.
-    fn close_loop(&self, i: usize, q: &[SJet; 3]) -> Result<Loop, MechanismError> {
+    fn close_loop(&self, i: usize, q: &[SJet<2>; 2]) -> Result<Loop, MechanismError> {
         let a = &self.params.actuators[i];
         let foot_ball = VJet::constant(a.foot_ball)
             .rotate(&Vector3::x_axis(), q[1])
@@ -231,7 +231,7 @@ impl AnkleDrive {
         q: [f64; 2],
         qd: [f64; 2],
     ) -> Result<AnkleTransmission, MechanismError> {
-        let qj = seed_inputs(NAME, 2, &q, &qd)?;
+        let qj = seed_inputs::<2>(NAME, &q, &qd)?;
         let l = [
             self.close_loop(0, &qj)?.travel,
             self.close_loop(1, &qj)?.travel,
@@ -353,8 +353,8 @@ impl AnkleDrive {
         &self,
         actuator: usize,
         part: AnklePart,
-        q: &[SJet; 3],
-    ) -> Result<FrameJet, MechanismError> {
+        q: &[SJet<2>; 2],
+    ) -> Result<FrameJet<2>, MechanismError> {
         let a = &self.params.actuators[actuator];
         let lp = self.close_loop(actuator, q)?;
         let axis = VJet::constant(a.screw_axis);
@@ -395,7 +395,7 @@ impl AnkleCoupling {
         &self,
         q: [f64; 2],
     ) -> Result<(Vector3<f64>, Vector3<f64>), MechanismError> {
-        let qj = seed_inputs(NAME, 2, &q, &[0.0; 2])?;
+        let qj = seed_inputs::<2>(NAME, &q, &[0.0; 2])?;
         let a = &self.drive.params.actuators[self.actuator];
         let lp = self.drive.close_loop(self.actuator, &qj)?;
         Ok((lp.foot_ball.v, a.screw_top + a.screw_axis * lp.travel.v))
@@ -409,7 +409,7 @@ impl Coupling for AnkleCoupling {
 
     /// Pose, Jacobian and bias of the part relative to the shank, (3.30)-(3.37).
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
-        let q = seed_inputs(NAME, 2, q_in, qd_in)?;
+        let q = seed_inputs::<2>(NAME, q_in, qd_in)?;
         Ok(self.drive.frame(self.actuator, self.part, &q)?.motion())
     }
 }

@@ -84,7 +84,7 @@ impl Coupling for HarmonicDriveRotor {
 
     /// Pose `A_pk' A_z(N q + offset)` (3.2), Jacobian `[0 0 N 0 0 0]^T` and zero bias (3.1).
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
-        super::jet::seed_inputs(NAME, 1, q_in, qd_in)?;
+        super::jet::seed_inputs::<1>(NAME, q_in, qd_in)?;
         let p = &self.params;
         let spin = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), self.rotor_angle(q_in[0]));
         let mut jacobian = [Vector6::zeros(); MAX_COUPLED];

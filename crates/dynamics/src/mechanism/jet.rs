@@ -18,11 +18,11 @@ use std::ops::{Add, Sub};
 
 /// Scalar jet: value, partials, first and (zero-`qdd`) second time derivative.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SJet {
+pub struct SJet<const N: usize> {
     /// Value `f`.
     pub v: f64,
     /// Partial derivatives `df/dq_j`.
-    pub d: [f64; MAX_COUPLED],
+    pub d: [f64; N],
     /// `fdot = sum_j df/dq_j qd_j`.
     pub vel: f64,
     /// `fddot` at `qdd = 0`.
@@ -31,23 +31,23 @@ pub struct SJet {
 
 /// Vector jet (3-vectors): value, partials, first and (zero-`qdd`) second time derivative.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct VJet {
+pub struct VJet<const N: usize> {
     /// Value.
     pub v: Vector3<f64>,
     /// Partial derivatives.
-    pub d: [Vector3<f64>; MAX_COUPLED],
+    pub d: [Vector3<f64>; N],
     /// First time derivative.
     pub vel: Vector3<f64>,
     /// Second time derivative at `qdd = 0`.
     pub acc: Vector3<f64>,
 }
 
-impl SJet {
+impl<const N: usize> SJet<N> {
     /// A constant (all derivatives zero).
     pub fn constant(v: f64) -> Self {
         Self {
             v,
-            d: [0.0; MAX_COUPLED],
+            d: [0.0; N],
             vel: 0.0,
             acc: 0.0,
         }
@@ -55,7 +55,7 @@ impl SJet {
 
     /// The input coordinate `q_j` moving with rate `qd_j` (seed of the differentiation).
     pub fn input(j: usize, q: f64, qd: f64) -> Self {
-        let mut d = [0.0; MAX_COUPLED];
+        let mut d = [0.0; N];
         d[j] = 1.0;
         Self {
             v: q,
@@ -118,12 +118,12 @@ impl SJet {
     }
 }
 
-impl VJet {
+impl<const N: usize> VJet<N> {
     /// A constant vector.
     pub fn constant(v: Vector3<f64>) -> Self {
         Self {
             v,
-            d: [Vector3::zeros(); MAX_COUPLED],
+            d: [Vector3::zeros(); N],
             vel: Vector3::zeros(),
             acc: Vector3::zeros(),
         }
@@ -146,7 +146,7 @@ impl VJet {
     }
 
     /// `s * self` for a scalar jet `s` (product rule).
-    pub fn scale(self, s: SJet) -> Self {
+    pub fn scale(self, s: SJet<N>) -> Self {
         Self {
             v: self.v * s.v,
             d: std::array::from_fn(|j| self.d[j] * s.v + self.v * s.d[j]),
@@ -156,7 +156,7 @@ impl VJet {
     }
 
     /// `self . other`.
-    pub fn dot(&self, o: &Self) -> SJet {
+    pub fn dot(&self, o: &Self) -> SJet<N> {
         SJet {
             v: self.v.dot(&o.v),
             d: std::array::from_fn(|j| self.d[j].dot(&o.v) + self.v.dot(&o.d[j])),
@@ -166,7 +166,7 @@ impl VJet {
     }
 
     /// `c . self` for a constant vector `c`.
-    pub fn dot_const(&self, c: &Vector3<f64>) -> SJet {
+    pub fn dot_const(&self, c: &Vector3<f64>) -> SJet<N> {
         SJet {
             v: c.dot(&self.v),
             d: self.d.map(|x| c.dot(&x)),
@@ -186,7 +186,7 @@ impl VJet {
     }
 
     /// Euclidean norm (caller guarantees a non-zero value).
-    pub fn norm(&self) -> SJet {
+    pub fn norm(&self) -> SJet<N> {
         self.dot(self).sqrt()
     }
 
@@ -196,7 +196,7 @@ impl VJet {
     }
 
     /// `Rot(axis, angle) * self`: rotation by a scalar-jet angle about a fixed unit axis.
-    pub fn rotate(&self, axis: &Unit<Vector3<f64>>, angle: SJet) -> Self {
+    pub fn rotate(&self, axis: &Unit<Vector3<f64>>, angle: SJet<N>) -> Self {
         let rot = Rotation3::from_axis_angle(axis, angle.v);
         let k = axis.into_inner();
         let rv = rot * self.v;
@@ -215,7 +215,7 @@ impl VJet {
 }
 
 /// `SJet add` (exact derivative propagation).
-impl std::ops::Add for SJet {
+impl<const N: usize> std::ops::Add for SJet<N> {
     type Output = Self;
     fn add(self, o: Self) -> Self {
         Self {
@@ -228,7 +228,7 @@ impl std::ops::Add for SJet {
 }
 
 /// `SJet sub` (exact derivative propagation).
-impl std::ops::Sub for SJet {
+impl<const N: usize> std::ops::Sub for SJet<N> {
     type Output = Self;
     fn sub(self, o: Self) -> Self {
         self.add(o.scale(-1.0))
@@ -236,7 +236,7 @@ impl std::ops::Sub for SJet {
 }
 
 /// `SJet mul` (exact derivative propagation).
-impl std::ops::Mul for SJet {
+impl<const N: usize> std::ops::Mul for SJet<N> {
     type Output = Self;
     fn mul(self, o: Self) -> Self {
         Self {
@@ -249,7 +249,7 @@ impl std::ops::Mul for SJet {
 }
 
 /// `VJet add` (exact derivative propagation).
-impl std::ops::Add for VJet {
+impl<const N: usize> std::ops::Add for VJet<N> {
     type Output = Self;
     fn add(self, o: Self) -> Self {
         Self {
@@ -262,7 +262,7 @@ impl std::ops::Add for VJet {
 }
 
 /// `VJet sub` (exact derivative propagation).
-impl std::ops::Sub for VJet {
+impl<const N: usize> std::ops::Sub for VJet<N> {
     type Output = Self;
     fn sub(self, o: Self) -> Self {
         Self {
@@ -276,20 +276,20 @@ impl std::ops::Sub for VJet {
 
 /// Jets of a part frame: its three unit axes and its origin, all in parent coordinates.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FrameJet {
+pub struct FrameJet<const N: usize> {
     /// Unit x axis of the part frame.
-    pub x: VJet,
+    pub x: VJet<N>,
     /// Unit y axis of the part frame.
-    pub y: VJet,
+    pub y: VJet<N>,
     /// Unit z axis of the part frame.
-    pub z: VJet,
+    pub z: VJet<N>,
     /// Origin of the part frame.
-    pub p: VJet,
+    pub p: VJet<N>,
 }
 
-impl FrameJet {
+impl<const N: usize> FrameJet<N> {
     /// A frame with constant axes (columns of `rot`) and a moving origin `p`.
-    pub fn fixed_axes(rot: &Matrix3<f64>, p: VJet) -> Self {
+    pub fn fixed_axes(rot: &Matrix3<f64>, p: VJet<N>) -> Self {
         let c = |i: usize| VJet::constant(rot.column(i).into_owned());
         Self {
             x: c(0),
@@ -301,14 +301,14 @@ impl FrameJet {
 
     /// The frame whose z axis is the unit vector `u` and whose x axis is `normalize(m x u)` for
     /// a fixed reference direction `m` (`y = z x x`): the roll convention of rods and screws.
-    pub fn from_direction(u: VJet, m: &Vector3<f64>, p: VJet) -> Self {
+    pub fn from_direction(u: VJet<N>, m: &Vector3<f64>, p: VJet<N>) -> Self {
         let x = VJet::constant(*m).cross(&u).normalize();
         let y = u.cross(&x);
         Self { x, y, z: u, p }
     }
 
     /// This frame rotated about its own z axis by the scalar-jet angle `phi` (a spinning rotor).
-    pub fn spin_z(&self, phi: SJet) -> Self {
+    pub fn spin_z(&self, phi: SJet<N>) -> Self {
         let (c, s) = (phi.cos(), phi.sin());
         let x = self.x.scale(c).add(self.y.scale(s));
         let y = self.y.scale(c).sub(self.x.scale(s));
@@ -327,9 +327,13 @@ impl FrameJet {
     /// and their time derivatives at `qdd = 0` the bias.
     pub fn motion(&self) -> CoupledMotion {
         let (x, y, z, p) = (&self.x, &self.y, &self.z, &self.p);
-        let ang = |a: &VJet, b: &VJet, j: usize| a.d[j].dot(&b.v);
-        let lin = |a: &VJet, j: usize| a.v.dot(&p.d[j]);
+        let ang = |a: &VJet<N>, b: &VJet<N>, j: usize| a.d[j].dot(&b.v);
+        let lin = |a: &VJet<N>, j: usize| a.v.dot(&p.d[j]);
+        const { assert!(N <= MAX_COUPLED) };
         let jacobian = std::array::from_fn(|j| {
+            if j >= N {
+                return Vector6::zeros();
+            }
             Vector6::new(
                 ang(y, z, j),
                 ang(z, x, j),
@@ -339,8 +343,8 @@ impl FrameJet {
                 lin(z, j),
             )
         });
-        let bang = |a: &VJet, b: &VJet| a.acc.dot(&b.v) + a.vel.dot(&b.vel);
-        let blin = |a: &VJet| a.vel.dot(&p.vel) + a.v.dot(&p.acc);
+        let bang = |a: &VJet<N>, b: &VJet<N>| a.acc.dot(&b.v) + a.vel.dot(&b.vel);
+        let blin = |a: &VJet<N>| a.vel.dot(&p.vel) + a.v.dot(&p.acc);
         let bias = Vector6::new(
             bang(y, z),
             bang(z, x),
@@ -359,17 +363,16 @@ impl FrameJet {
     }
 }
 
-/// Checks `q_in`, `qd_in` (length `n`, finite) and seeds one input jet per coordinate.
-pub fn seed_inputs(
+/// Checks `q_in`, `qd_in` (length `N`, finite) and seeds one input jet per coordinate.
+pub fn seed_inputs<const N: usize>(
     mechanism: &'static str,
-    n: usize,
     q: &[f64],
     qd: &[f64],
-) -> Result<[SJet; MAX_COUPLED], MechanismError> {
-    if q.len() != n || qd.len() != n {
+) -> Result<[SJet<N>; N], MechanismError> {
+    if q.len() != N || qd.len() != N {
         return Err(MechanismError::BadInput {
             mechanism,
-            reason: format!("expected {n} inputs, got q {} / qd {}", q.len(), qd.len()),
+            reason: format!("expected {N} inputs, got q {} / qd {}", q.len(), qd.len()),
         });
     }
     if q.iter().chain(qd).any(|x| !x.is_finite()) {
@@ -378,13 +381,7 @@ pub fn seed_inputs(
             reason: "non-finite input".into(),
         });
     }
-    Ok(std::array::from_fn(|j| {
-        if j < n {
-            SJet::input(j, q[j], qd[j])
-        } else {
-            SJet::constant(0.0)
-        }
-    }))
+    Ok(std::array::from_fn(|j| SJet::input(j, q[j], qd[j])))
 }
 
 /// Error for a non-finite or non-positive geometric parameter.

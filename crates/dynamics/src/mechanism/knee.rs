@@ -168,7 +168,7 @@ impl KneeDrive {
     }
 
     /// `r_screw = A_ts s_r_a - B` (3.4) as a jet of the knee angle.
-    fn screw_vector(&self, q: SJet) -> VJet {
+    fn screw_vector(&self, q: SJet<1>) -> VJet<1> {
         let a = &self.params.pin_shank;
         let b = &self.params.pivot_thigh;
         VJet::constant(Vector3::new(a.x, a.y, 0.0))
@@ -177,7 +177,7 @@ impl KneeDrive {
     }
 
     /// `l_screw` as a jet, `OutOfRange` when the pin meets the pivot.
-    fn screw_length(&self, r: &VJet, q: f64) -> Result<SJet, MechanismError> {
+    fn screw_length(&self, r: &VJet<1>, q: f64) -> Result<SJet<1>, MechanismError> {
         if r.v.norm() <= 1e-9 * self.params.pin_shank.norm().max(1e-3) {
             return Err(MechanismError::OutOfRange {
                 mechanism: NAME,
@@ -190,7 +190,7 @@ impl KneeDrive {
 
     /// Nut travel, its first and second derivative and the motor angle, (3.3)-(3.7).
     pub fn transmission(&self, q: f64) -> Result<KneeTransmission, MechanismError> {
-        let [qj, ..] = seed_inputs(NAME, 1, &[q], &[1.0])?;
+        let [qj] = seed_inputs::<1>(NAME, &[q], &[1.0])?;
         let l = self.screw_length(&self.screw_vector(qj), q)?;
         Ok(KneeTransmission {
             travel: l.v,
@@ -269,7 +269,7 @@ impl KneeDrive {
     }
 
     /// Frame jets of a part at the knee-angle jet `q`.
-    fn frame(&self, part: KneePart, q: SJet) -> Result<FrameJet, MechanismError> {
+    fn frame(&self, part: KneePart, q: SJet<1>) -> Result<FrameJet<1>, MechanismError> {
         let r = self.screw_vector(q);
         let l = self.screw_length(&r, q.v)?;
         let axis = if self.params.screw_tilt {
@@ -312,7 +312,7 @@ impl Coupling for KneeCoupling {
 
     /// Pose, Jacobian and bias of the part relative to the thigh, (3.8)-(3.21).
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
-        let [q, ..] = seed_inputs(NAME, 1, q_in, qd_in)?;
+        let [q] = seed_inputs::<1>(NAME, q_in, qd_in)?;
         Ok(self.drive.frame(self.part, q)?.motion())
     }
 }

@@ -134,7 +134,7 @@ impl VergenceDrive {
     /// `phi_lever(q_verg)`, its Jacobian (3.44), second derivative and the motor angle (3.43);
     /// `OutOfRange` where (3.41) has no real, non-singular solution.
     pub fn lever(&self, q_verg: f64) -> Result<LeverKinematics, MechanismError> {
-        let [q, ..] = seed_inputs(NAME, 1, &[q_verg], &[1.0])?;
+        let [q] = seed_inputs::<1>(NAME, &[q_verg], &[1.0])?;
         let p = &self.params;
         let kb = Vector3::new(p.receptacle_joint.x, 0.0, p.receptacle_joint.y);
         let rk = Vector3::new(p.receptacle_pivot.x, 0.0, p.receptacle_pivot.y);
