@@ -28,7 +28,7 @@
 
 use super::jet::{bad_param, seed_inputs, FrameJet, SJet, VJet};
 use super::{CoupledMotion, Coupling, MechanismError};
-use nalgebra::{Matrix2, Vector2, Vector3};
+use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 use std::f64::consts::PI;
 use std::ops::{Add, Mul, Sub};
 
@@ -120,6 +120,8 @@ pub enum AnklePart {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AnkleDrive {
     params: AnkleDriveParams,
+    /// Constant screw frames (columns x, y, z in shank coordinates), see the module doc.
+    screw_frames: [Matrix3<f64>; 2],
 }
 
 /// Per-actuator jets of one evaluation.
@@ -165,7 +167,16 @@ impl AnkleDrive {
             }
             a.screw_axis /= n;
         }
-        let drive = Self { params };
+        let screw_frame = |e: Vector3<f64>| {
+            let f =
+                FrameJet::<2>::from_direction(VJet::constant(e), &Vector3::y(), VJet::constant(e));
+            Matrix3::from_columns(&[f.x.v, f.y.v, f.z.v])
+        };
+        let screw_frames = params.actuators.map(|a| screw_frame(a.screw_axis));
+        let drive = Self {
+            params,
+            screw_frames,
+        };
         drive.check_range()?;
         Ok(drive)
     }
@@ -357,17 +368,18 @@ impl AnkleDrive {
     ) -> Result<FrameJet<2>, MechanismError> {
         let a = &self.params.actuators[actuator];
         let lp = self.close_loop(actuator, q)?;
+        let frame = &self.screw_frames[actuator];
         let axis = VJet::constant(a.screw_axis);
         let top = VJet::constant(a.screw_top);
         let nut = top.add(axis.scale(lp.travel));
         Ok(match part {
-            AnklePart::Nut => FrameJet::from_direction(axis, &Vector3::y(), nut),
+            AnklePart::Nut => FrameJet::fixed_axes(frame, nut),
             AnklePart::Rotor => {
                 let phi = lp
                     .travel
                     .scale(self.screw_ratio())
                     .add(SJet::constant(a.motor_offset));
-                FrameJet::from_direction(axis, &Vector3::y(), top).spin_z(phi)
+                FrameJet::fixed_axes(frame, top).spin_z(phi)
             }
             AnklePart::Rod => {
                 let u = lp
