@@ -187,6 +187,37 @@ fn out_of_range_and_bad_inputs_are_errors_not_panics() {
     }
 }
 
+#[test]
+fn bias_matches_thesis_formulas_3_31_and_3_35() {
+    // l_ddot(qdd = 0) = p . r_ddot + p_dot . r_dot, p_dot = (r_dot' P r) P r / d^3 - P r_dot / d.
+    let d = drive();
+    let p = *d.params();
+    let qd = [0.8, -1.3];
+    let h = 1e-5;
+    for q in grid(&p, 6) {
+        let tr = d.transmission(q, qd).unwrap();
+        for i in 0..2 {
+            let a = &p.actuators[i];
+            let e = a.screw_axis;
+            let r_at =
+                |t: f64| foot_ball(&p, i, [q[0] + qd[0] * t, q[1] + qd[1] * t]) - a.screw_top;
+            let r = r_at(0.0);
+            let rdot = (r_at(h) - r_at(-h)) / (2.0 * h);
+            let rddot = (r_at(h) - 2.0 * r + r_at(-h)) / (h * h);
+            let pm = e * e.transpose() - Matrix3::identity();
+            let dd = (a.rod_length.powi(2) + r.dot(&(pm * r))).sqrt();
+            let pv = e - pm * r / dd;
+            let pdot = (rdot.dot(&(pm * r))) * (pm * r) / dd.powi(3) - pm * rdot / dd;
+            let expected = pv.dot(&rddot) + pdot.dot(&rdot);
+            assert!(
+                (tr.jdot_qd[i] - expected).abs() < 1e-5 * (1.0 + expected.abs()),
+                "{} vs {expected}",
+                tr.jdot_qd[i]
+            );
+        }
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(128))]
     #[test]

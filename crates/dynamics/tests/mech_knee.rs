@@ -62,6 +62,11 @@ fn transmission_derivatives_match_finite_differences_and_thesis() {
         assert!((t.travel - r.norm()).abs() < 1e-15);
         assert!((t.dtravel - r.dot(&Vector3::z().cross(&a)) / r.norm()).abs() < 1e-14);
         assert!((t.motor_angle - (d.screw_ratio() * t.travel + 0.3)).abs() < 1e-12);
+        // (3.6) with the square restored: l_ddot = (rdot.rdot + r.rddot - l_dot^2) / l,
+        // rddot = e_z x (e_z x A) = -A (A in the knee plane).
+        let rdot = Vector3::z().cross(&a);
+        let l2 = (rdot.dot(&rdot) - r.dot(&a) - t.dtravel.powi(2)) / r.norm();
+        assert!((t.ddtravel - l2).abs() < 1e-13);
     }
 }
 
