@@ -1,5 +1,6 @@
 //! Preallocated per-call workspace (model/data split): every recursion writes here.
 
+use crate::mechanism::MechanismError;
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::spatial::{ArticulatedInertia, Force, Motion, SpatialTransform};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
@@ -72,7 +73,7 @@ pub struct Data {
     /// `p_S` (2.68 for sub-systems), per sub-system.
     pub(crate) sub_p: Vec<[f64; MAX_SUBSYSTEM_DOF]>,
     /// Body whose mechanism failed in the last kinematics pass (reported as an error).
-    pub(crate) mechanism_fault: Option<usize>,
+    pub(crate) mechanism_fault: Option<(usize, MechanismError)>,
     /// Generalized accelerations (output of forward dynamics).
     pub ddq: DVector<f64>,
     /// Generalized forces (output of inverse dynamics).

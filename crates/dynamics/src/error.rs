@@ -1,5 +1,6 @@
 //! Typed errors of model construction and of the dynamics algorithms.
 
+use crate::mechanism::MechanismError;
 use thiserror::Error;
 
 /// Invalid model input, reported by [`crate::RigidInertia::new`] and [`crate::ModelBuilder`].
@@ -95,6 +96,18 @@ pub enum ModelError {
     /// Gravity contains NaN or infinity.
     #[error("non-finite gravity vector")]
     NonFiniteGravity,
+    /// Coordinate-sharing bodies form a sub-system with too many coordinates (2.6).
+    #[error(
+        "body `{body}`: its sub-system spans {dof} coordinates, more than the supported {max}"
+    )]
+    SubsystemTooLarge {
+        /// Name of the sub-system's first member body.
+        body: String,
+        /// Coordinates the sub-system would span.
+        dof: usize,
+        /// Largest supported sub-system size.
+        max: usize,
+    },
 }
 
 /// Invalid input to, or failure of, a kinematics/dynamics computation.
@@ -131,6 +144,14 @@ pub enum DynamicsError {
         index: usize,
         /// Offending pivot.
         pivot: f64,
+    },
+    /// A coupled part's mechanism cannot be evaluated at the given coordinates.
+    #[error("coupled body {body}: {source}")]
+    Mechanism {
+        /// Index of the coupled body.
+        body: usize,
+        /// What the mechanism reported.
+        source: MechanismError,
     },
     /// The algorithm does not support a feature of the model.
     #[error("algorithm not supported for this model: {0}")]

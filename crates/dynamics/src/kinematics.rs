@@ -2,7 +2,7 @@
 //! every algorithm of the crate, and the public forward-kinematics entry points.
 
 use crate::check;
-use crate::mechanism::{Coupling, MAX_COUPLED};
+use crate::mechanism::{Coupling, MechanismError, MAX_COUPLED};
 use crate::model::joint::{
     euler_zxz_jacobian, euler_zxz_jr_dot_qd, euler_zxz_rotation, quaternion_rotation,
     six_dof_motion, Joint,
@@ -211,10 +211,18 @@ fn coupled_kinematics(
         qin[k] = q[body.q_set.as_slice()[k]];
         qdin[k] = v.map_or(0.0, |v| v[body.v_set.as_slice()[k]]);
     }
-    let m = match mechanism.motion(&qin[..n], &qdin[..n]) {
-        Ok(m) if m.pose.translation.vector.iter().all(|x| x.is_finite()) => m,
-        _ => {
-            data.mechanism_fault = Some(i);
+    let fault = match mechanism.motion(&qin[..n], &qdin[..n]) {
+        Ok(m) if m.pose.translation.vector.iter().all(|x| x.is_finite()) => Ok(m),
+        Ok(_) => Err(MechanismError::BadInput {
+            mechanism: "coupled part",
+            reason: "non-finite pose".into(),
+        }),
+        Err(e) => Err(e),
+    };
+    let m = match fault {
+        Ok(m) => m,
+        Err(e) => {
+            data.mechanism_fault = Some((i, e));
             return (body.placement_x, Motion::zero(), Motion::zero());
         }
     };
@@ -233,9 +241,7 @@ fn coupled_kinematics(
 pub(crate) fn take_fault(data: &mut Data) -> Result<(), DynamicsError> {
     match data.mechanism_fault.take() {
         None => Ok(()),
-        Some(_) => Err(DynamicsError::Unsupported(
-            "a coupled part's mechanism input lies outside its assembly range",
-        )),
+        Some((body, source)) => Err(DynamicsError::Mechanism { body, source }),
     }
 }
 

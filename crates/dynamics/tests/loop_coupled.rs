@@ -264,3 +264,69 @@ fn four_bar_simulation_conserves_energy_and_closure() {
     // The crank made at least part of a revolution: the test exercised the loop.
     assert!((q[0] - 0.3).abs() > 0.5, "crank barely moved: {}", q[0]);
 }
+
+/// A four-bar driven outside its assembly range gives a typed mechanism error from every
+/// entry point (never NaN, never a panic), and works again once back in range.
+#[test]
+fn mechanism_out_of_range_is_a_typed_error() {
+    // Coupler + rocker (0.2) span the gap |O_B - A| = 0.15 when the crank points towards O_B
+    // (q = 0) but not the gap 0.25 when it points away (q = pi).
+    let bar = FourBar {
+        crank: 0.05,
+        coupler: 0.1,
+        rocker: 0.1,
+        ground: 0.2,
+        elbow: 1.0,
+    };
+    let inertia = RigidInertia::new(
+        1.0,
+        Vector3::new(0.02, 0.0, 0.0),
+        Matrix3::identity() * 1e-3,
+    )
+    .expect("valid inertia");
+    let mut b = ModelBuilder::new();
+    let crank = b
+        .add_body(BodySpec {
+            name: "crank".into(),
+            joint_name: "q".into(),
+            parent: None,
+            joint: JointModel::Revolute {
+                axis: Vector3::z_axis(),
+            },
+            placement: Isometry3::identity(),
+            inertia,
+        })
+        .expect("crank");
+    b.add_body(BodySpec {
+        name: "coupler".into(),
+        joint_name: "coupler".into(),
+        parent: None,
+        joint: JointModel::Coupled {
+            mechanism: Mechanism::FourBar(bar),
+            inputs: vec![crank],
+        },
+        placement: Isometry3::identity(),
+        inertia,
+    })
+    .expect("coupler");
+    let model: Model = b.build().expect("model");
+    let mut data = Data::new(&model);
+    let (v, tau) = (DVector::from_element(1, 0.3), DVector::zeros(1));
+    let bad = DVector::from_element(1, std::f64::consts::PI);
+    let good = DVector::zeros(1);
+    let is_mechanism_error = |e: biped_dynamics::DynamicsError| {
+        matches!(e, biped_dynamics::DynamicsError::Mechanism { body: 1, .. })
+    };
+    for algo in [Algorithm::On, Algorithm::Crba, Algorithm::Sparse] {
+        let err = forward_dynamics(&model, &mut data, &bad, &v, &tau, None, algo).unwrap_err();
+        assert!(is_mechanism_error(err), "{algo:?}");
+        let qdd =
+            forward_dynamics(&model, &mut data, &good, &v, &tau, None, algo).expect("in range");
+        assert!(qdd.iter().all(|x| x.is_finite()));
+    }
+    assert!(is_mechanism_error(
+        mass_matrix(&model, &mut data, &bad).unwrap_err()
+    ));
+    let err = inverse_dynamics(&model, &mut data, &bad, &v, &tau, None).unwrap_err();
+    assert!(is_mechanism_error(err));
+}

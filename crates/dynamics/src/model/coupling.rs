@@ -9,6 +9,9 @@ use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3, Vector6};
 macro_rules! mechanisms {
     ($($(#[$doc:meta])* $variant:ident($ty:ty),)*) => {
         /// A coupled body's mechanism, one variant per concrete [`Coupling`] type (no `dyn`).
+        // Stored once per body and read in place on the hot path: variant sizes do not matter,
+        // boxing would only add an indirection.
+        #[allow(clippy::large_enum_variant)]
         #[derive(Clone, Debug, PartialEq)]
         pub enum Mechanism {
             $($(#[$doc])* $variant($ty),)*

@@ -136,10 +136,10 @@ fn build_subsystem(bodies: &[Body], members: Vec<BodyId>) -> Result<Subsystem, M
     v_set.sort_unstable();
     v_set.dedup();
     if v_set.len() > MAX_SUBSYSTEM_DOF {
-        return Err(ModelError::BadDriver {
+        return Err(ModelError::SubsystemTooLarge {
             body: bodies[members[0]].name.clone(),
-            driver: v_set.len(),
-            reason: "the sub-system formed by coordinate-sharing bodies spans more than MAX_SUBSYSTEM_DOF coordinates",
+            dof: v_set.len(),
+            max: MAX_SUBSYSTEM_DOF,
         });
     }
     let columns = members
