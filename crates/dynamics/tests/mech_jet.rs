@@ -22,7 +22,8 @@ fn vector(q: &[SJet<2>; 2]) -> VJet<2> {
         .rotate(&Vector3::y_axis(), q[0])
         .offset(&Vector3::new(0.1, 0.0, -0.4));
     let b = a.transform(&m).scale(q[0]) - VJet::constant(Vector3::z());
-    let c = a.cross(&b).normalize() + a.scale(a.dot(&b));
+    let c = (a.cross(&b) + VJet::constant(Vector3::new(5.0, 0.0, 0.0))).normalize()
+        + a.scale(a.dot(&b));
     c.scale(c.dot_const(&Vector3::new(1.0, 2.0, 3.0)).sin())
 }
 
