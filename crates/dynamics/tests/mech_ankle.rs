@@ -249,4 +249,24 @@ proptest! {
         let back = d.ankle_angles([phi.x, phi.y], None).unwrap();
         prop_assert!((back[0] - q0).abs() < 1e-12 && (back[1] - q1).abs() < 1e-12);
     }
+
+    #[test]
+    fn newton_never_panics_and_ok_means_solved(m0 in 80.0..220.0f64, m1 in 80.0..220.0f64) {
+        let d = drive();
+        match d.ankle_angles([m0, m1], None) {
+            Ok(q) => {
+                let p = d.params();
+                prop_assert!((0..2).all(|j| q[j] >= p.q_min[j] - 1e-9 && q[j] <= p.q_max[j] + 1e-9));
+                let phi = d.transmission(q, [0.0; 2]).unwrap().motor_angles;
+                prop_assert!((phi.x - m0).abs() < 1e-8 && (phi.y - m1).abs() < 1e-8);
+            }
+            Err(e) => {
+                let expected = matches!(
+                    e,
+                    MechanismError::OutOfRange { .. } | MechanismError::NoConvergence { .. }
+                );
+                prop_assert!(expected, "{:?}", e);
+            }
+        }
+    }
 }

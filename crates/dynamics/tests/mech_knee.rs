@@ -241,4 +241,19 @@ proptest! {
         let back = d.knee_angle(d.motor_angle(q).unwrap()).unwrap();
         prop_assert!((back - q).abs() < 1e-12);
     }
+
+    #[test]
+    fn newton_never_panics_and_ok_means_solved(motor in 300.0..460.0f64, tilt: bool) {
+        let d = drive(tilt);
+        match d.knee_angle(motor) {
+            Ok(q) => {
+                prop_assert!(q >= d.params().q_min && q <= d.params().q_max);
+                prop_assert!((d.motor_angle(q).unwrap() - motor).abs() < 1e-9);
+            }
+            Err(e) => {
+                let expected = matches!(e, MechanismError::OutOfRange { .. });
+                prop_assert!(expected, "{:?}", e);
+            }
+        }
+    }
 }

@@ -120,8 +120,22 @@ pub enum AnklePart {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AnkleDrive {
     params: AnkleDriveParams,
-    /// Constant screw frames (columns x, y, z in shank coordinates), see the module doc.
-    screw_frames: [Matrix3<f64>; 2],
+    /// The two slider-cranks.
+    cranks: [SliderCrank; 2],
+}
+
+/// One validated spatial slider-crank: everything its parts need, nothing more (small, so
+/// that [`AnkleCoupling`] stays small).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct SliderCrank {
+    /// Ankle centre `C` (shank frame).
+    center: Vector3<f64>,
+    /// Geometry (screw axis normalized).
+    act: AnkleActuatorParams,
+    /// Constant screw frame (columns x, y, z in shank coordinates), see the module doc.
+    frame: Matrix3<f64>,
+    /// `N_screw`.
+    ratio: f64,
 }
 
 /// Per-actuator jets of one evaluation.
@@ -167,15 +181,19 @@ impl AnkleDrive {
             }
             a.screw_axis /= n;
         }
-        let screw_frame = |e: Vector3<f64>| {
-            let f =
-                FrameJet::<2>::from_direction(VJet::constant(e), &Vector3::y(), VJet::constant(e));
-            Matrix3::from_columns(&[f.x.v, f.y.v, f.z.v])
+        let crank = |act: AnkleActuatorParams| {
+            let e = VJet::<2>::constant(act.screw_axis);
+            let f = FrameJet::from_direction(e, &Vector3::y(), e);
+            SliderCrank {
+                center: params.ankle_center,
+                act,
+                frame: Matrix3::from_columns(&[f.x.v, f.y.v, f.z.v]),
+                ratio: 2.0 * PI / params.lead,
+            }
         };
-        let screw_frames = params.actuators.map(|a| screw_frame(a.screw_axis));
         let drive = Self {
             params,
-            screw_frames,
+            cranks: params.actuators.map(crank),
         };
         drive.check_range()?;
         Ok(drive)
@@ -210,32 +228,6 @@ impl AnkleDrive {
         2.0 * PI / self.params.lead
     }
 
-    /// Closes loop `i` (3.23)-(3.29) at the input jets `q = [q_flx, q_add]`.
-    fn close_loop(&self, i: usize, q: &[SJet<2>; 2]) -> Result<Loop, MechanismError> {
-        let a = &self.params.actuators[i];
-        let foot_ball = VJet::constant(a.foot_ball)
-            .rotate(&Vector3::x_axis(), q[1])
-            .rotate(&Vector3::y_axis(), q[0])
-            .offset(&self.params.ankle_center);
-        let r = foot_ball.offset(&-a.screw_top);
-        let er = r.dot_const(&a.screw_axis);
-        let d2 = er
-            .mul(er)
-            .sub(r.dot(&r))
-            .add(SJet::constant(a.rod_length * a.rod_length));
-        if d2.v <= 0.0 {
-            return Err(MechanismError::OutOfRange {
-                mechanism: NAME,
-                input: vec![q[0].v, q[1].v],
-                reason: "no real root of (3.25): d^2 <= 0 in (3.29)",
-            });
-        }
-        Ok(Loop {
-            travel: er.sub(d2.sqrt()),
-            foot_ball,
-        })
-    }
-
     /// Nut travels, their 2x2 Jacobian, `Jdot qd` and the motor angles, (3.22)-(3.33).
     pub fn transmission(
         &self,
@@ -244,8 +236,8 @@ impl AnkleDrive {
     ) -> Result<AnkleTransmission, MechanismError> {
         let qj = seed_inputs::<2>(NAME, &q, &qd)?;
         let l = [
-            self.close_loop(0, &qj)?.travel,
-            self.close_loop(1, &qj)?.travel,
+            self.cranks[0].close_loop(&qj)?.travel,
+            self.cranks[1].close_loop(&qj)?.travel,
         ];
         let n = self.screw_ratio();
         let acts = &self.params.actuators;
@@ -353,22 +345,44 @@ impl AnkleDrive {
             });
         }
         Ok(AnkleCoupling {
-            drive: *self,
-            actuator,
+            crank: self.cranks[actuator],
             part,
+        })
+    }
+}
+
+impl SliderCrank {
+    /// Closes the loop (3.23)-(3.29) at the input jets `q = [q_flx, q_add]`.
+    fn close_loop(&self, q: &[SJet<2>; 2]) -> Result<Loop, MechanismError> {
+        let a = &self.act;
+        let foot_ball = VJet::constant(a.foot_ball)
+            .rotate(&Vector3::x_axis(), q[1])
+            .rotate(&Vector3::y_axis(), q[0])
+            .offset(&self.center);
+        let r = foot_ball.offset(&-a.screw_top);
+        let er = r.dot_const(&a.screw_axis);
+        let d2 = er
+            .mul(er)
+            .sub(r.dot(&r))
+            .add(SJet::constant(a.rod_length * a.rod_length));
+        if d2.v <= 0.0 {
+            return Err(MechanismError::OutOfRange {
+                mechanism: NAME,
+                input: vec![q[0].v, q[1].v],
+                reason: "no real root of (3.25): d^2 <= 0 in (3.29)",
+            });
+        }
+        Ok(Loop {
+            travel: er.sub(d2.sqrt()),
+            foot_ball,
         })
     }
 
     /// Frame jets of one part at the input jets `q`.
-    fn frame(
-        &self,
-        actuator: usize,
-        part: AnklePart,
-        q: &[SJet<2>; 2],
-    ) -> Result<FrameJet<2>, MechanismError> {
-        let a = &self.params.actuators[actuator];
-        let lp = self.close_loop(actuator, q)?;
-        let frame = &self.screw_frames[actuator];
+    fn frame(&self, part: AnklePart, q: &[SJet<2>; 2]) -> Result<FrameJet<2>, MechanismError> {
+        let a = &self.act;
+        let lp = self.close_loop(q)?;
+        let frame = &self.frame;
         let axis = VJet::constant(a.screw_axis);
         let top = VJet::constant(a.screw_top);
         let nut = top.add(axis.scale(lp.travel));
@@ -377,7 +391,7 @@ impl AnkleDrive {
             AnklePart::Rotor => {
                 let phi = lp
                     .travel
-                    .scale(self.screw_ratio())
+                    .scale(self.ratio)
                     .add(SJet::constant(a.motor_offset));
                 FrameJet::fixed_axes(frame, top).spin_z(phi)
             }
@@ -396,8 +410,7 @@ impl AnkleDrive {
 /// adduction).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AnkleCoupling {
-    drive: AnkleDrive,
-    actuator: usize,
+    crank: SliderCrank,
     part: AnklePart,
 }
 
@@ -408,8 +421,8 @@ impl AnkleCoupling {
         q: [f64; 2],
     ) -> Result<(Vector3<f64>, Vector3<f64>), MechanismError> {
         let qj = seed_inputs::<2>(NAME, &q, &[0.0; 2])?;
-        let a = &self.drive.params.actuators[self.actuator];
-        let lp = self.drive.close_loop(self.actuator, &qj)?;
+        let a = &self.crank.act;
+        let lp = self.crank.close_loop(&qj)?;
         Ok((lp.foot_ball.v, a.screw_top + a.screw_axis * lp.travel.v))
     }
 }
@@ -422,6 +435,6 @@ impl Coupling for AnkleCoupling {
     /// Pose, Jacobian and bias of the part relative to the shank, (3.30)-(3.37).
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
         let q = seed_inputs::<2>(NAME, q_in, qd_in)?;
-        Ok(self.drive.frame(self.actuator, self.part, &q)?.motion())
+        Ok(self.crank.frame(self.part, &q)?.motion())
     }
 }
