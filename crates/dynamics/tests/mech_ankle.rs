@@ -269,4 +269,28 @@ proptest! {
             }
         }
     }
+
+    #[test]
+    fn random_geometries_match_finite_differences(
+        dx in -0.03..0.03f64, dy in -0.01..0.01f64, ex in -0.2..0.2f64, ey in -0.2..0.2f64,
+        fz in -0.02..0.05f64, rod in 0.15..0.25f64,
+        q0 in -0.3..0.3f64, q1 in -0.2..0.2f64, qd0 in -3.0..3.0f64, qd1 in -3.0..3.0f64,
+        k in 0usize..3,
+    ) {
+        let mut p = AnkleDriveParams::default();
+        p.actuators[0].screw_top += Vector3::new(dx, dy, 0.0);
+        p.actuators[0].screw_axis = Vector3::new(ex, ey, -1.0);
+        p.actuators[1].foot_ball.z = fz;
+        p.actuators[1].rod_length = rod;
+        p.q_min = [-0.3, -0.2];
+        p.q_max = [0.3, 0.2];
+        if let Ok(d) = AnkleDrive::new(p) {
+            for i in 0..2 {
+                check_coupling(&d.part(i, PARTS[k]).unwrap(), &[q0, q1], &[qd0, qd1], 1e-6);
+            }
+            let phi = d.transmission([q0, q1], [0.0; 2]).unwrap().motor_angles;
+            let back = d.ankle_angles([phi.x, phi.y], None).unwrap();
+            prop_assert!((back[0] - q0).abs() < 1e-12 && (back[1] - q1).abs() < 1e-12);
+        }
+    }
 }

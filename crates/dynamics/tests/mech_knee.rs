@@ -256,4 +256,25 @@ proptest! {
             }
         }
     }
+
+    #[test]
+    fn random_geometries_match_finite_differences(
+        bx in -0.1..0.1f64, by in 0.2..0.4f64, ax in -0.08..-0.02f64, ay in -0.02..0.05f64,
+        t in 0.0..1.0f64, qd in -3.0..3.0f64, tilt: bool, k in 0usize..3,
+    ) {
+        let p = KneeDriveParams {
+            pivot_thigh: Vector2::new(bx, by),
+            pin_shank: Vector2::new(ax, ay),
+            screw_tilt: tilt,
+            q_min: 0.0,
+            q_max: 1.0,
+            q_ref: 0.5,
+            ..Default::default()
+        };
+        if let Ok(d) = KneeDrive::new(p) {
+            check_coupling(&d.part(PARTS[k]), &[t], &[qd], 1e-6);
+            let back = d.knee_angle(d.motor_angle(t).unwrap()).unwrap();
+            prop_assert!((back - t).abs() < 1e-12);
+        }
+    }
 }
