@@ -55,7 +55,7 @@ pub struct Pss {
     radius: f64,
 }
 
-/// Line-swept-sphere volume: a capsule about segment `v0 + s e`, s in [0,1] (6.3.2, 6.4).
+/// Line-swept-sphere volume: a capsule about segment `v0 + s e`, `s in [0, 1]` (6.3.2, 6.4).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Lss {
     vertices: [Point3<f64>; 2],

@@ -1,6 +1,6 @@
 //! Statically dispatched mechanisms of coupled bodies (issue item 1): an enum over the
 //! concrete [`Coupling`] types, plus two closed-form test mechanisms (a linear gear and a
-//! planar four-bar coupler). Adding a mechanism type is one line in [`mechanisms!`].
+//! planar four-bar coupler). Adding a mechanism type is one line in `mechanisms!`.
 
 use crate::mechanism::{CoupledMotion, Coupling, MechanismError, MAX_COUPLED};
 use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3, Vector6};
