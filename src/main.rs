@@ -24,6 +24,8 @@ enum Command {
     Model(cli::dynamics::ModelArgs),
     /// Forward/inverse dynamics and mass matrices on JSON Lines from stdin.
     Dynamics(cli::dynamics::DynamicsArgs),
+    /// Calibrate absolute-encoder offsets from jig measurements (thesis 3.5).
+    Calibrate(cli::calibrate::CalibrateArgs),
     /// Benchmarks of whole capabilities.
     #[command(subcommand)]
     Bench(cli::BenchCommand),
@@ -35,6 +37,7 @@ fn main() -> ExitCode {
         Command::Ssv(cmd) => cli::ssv::run(cmd),
         Command::Model(args) => cli::dynamics::run_model(args),
         Command::Dynamics(args) => cli::dynamics::run_dynamics(args),
+        Command::Calibrate(args) => cli::calibrate::run(args),
         Command::Bench(cmd) => cli::run_bench(cmd),
     };
     match result {

@@ -1,5 +1,6 @@
 //! Sub-command implementations, one module per capability.
 
+pub mod calibrate;
 pub mod dynamics;
 pub mod ssv;
 
