@@ -162,14 +162,16 @@ impl LocalInterval {
     /// them (points differ by at least `g_k` along each orthonormal axis). 0 if they touch.
     #[inline]
     pub fn distance_squared(&self, other: &LocalInterval) -> f64 {
-        let mut sum = 0.0;
-        for k in 0..3 {
-            let gap = (self.lo[k] - other.hi[k]).max(other.lo[k] - self.hi[k]);
-            if gap > 0.0 {
-                sum += gap * gap;
+        let gap = |k: usize| {
+            let g = (self.lo[k] - other.hi[k]).max(other.lo[k] - self.hi[k]);
+            if g > 0.0 {
+                g
+            } else {
+                0.0
             }
-        }
-        sum
+        };
+        let (x, y, z) = (gap(0), gap(1), gap(2));
+        x * x + y * y + z * z
     }
 }
 

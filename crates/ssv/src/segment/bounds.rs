@@ -7,13 +7,16 @@
 //!   box bounds a whole row `i`. Symmetrically, B's SSVs in A's box frame bound whole
 //!   columns `j` and, against A's precomputed intervals, each pair a second time; the larger
 //!   of the two pair bounds is used;
-//! * bounding spheres: `d(i, j) >= |c_i - c_j| - R_i - R_j` (signed, valid when overlapping).
+//! * bounding spheres: `d(i, j) >= |c_i - c_j| - R_i - R_j` (signed, valid when overlapping);
+//! * an axis n (the normal of the first evaluated pair, else the box-centre direction): `d(i, j) >= min_{x in j} x . n -
+//!   max_{x in i} x . n` (signed as well: |q - p| >= (q - p) . n for any unit n).
 //!
 //! Interval bounds are non-negative, so they only prune while they are positive (a zero
 //! bound says nothing about how deep two volumes interpenetrate).
 
 use super::{BoundingSphere, Segment};
 use crate::obb::LocalInterval;
+use crate::primitives::Ssv;
 use nalgebra::Vector3;
 
 /// Slack on every bound so that rounding can never prune the true closest pair.
@@ -40,74 +43,135 @@ pub(super) fn sphere_excludes(s: &BoundingSphere, t: &BoundingSphere, best: f64)
     reach <= 0.0 || (t.center - s.center).norm_squared() >= reach * reach
 }
 
-/// The interval that bounds nothing (used past [`MAX_COLUMNS`]).
+/// The interval that bounds nothing (placeholder of columns not computed yet).
 #[inline(always)]
 fn unbounded() -> LocalInterval {
-    LocalInterval {
-        lo: Vector3::repeat(f64::NEG_INFINITY),
-        hi: Vector3::repeat(f64::INFINITY),
-    }
+    UNBOUNDED_REF.0
 }
 
-/// The SSVs of B in A's box frame: their intervals and squared gaps to A's box.
+/// The SSVs of B in A's box frame (their intervals and squared gaps to A's box), computed
+/// on first use: only columns that meet a pair surviving the sphere bound are transformed.
 pub(super) struct Columns {
     interval: [LocalInterval; MAX_COLUMNS],
     bound_sq: [f64; MAX_COLUMNS],
-    len: usize,
+    /// Bit j set when column j is computed.
+    done: u32,
 }
 
 impl Columns {
-    /// The column bounds of `b` against `a`'s box.
-    #[inline]
-    pub fn new(a: &Segment, b: &Segment) -> Self {
-        let ssvs = b.world_ssvs();
-        let box_a = a.world_obb();
-        let own = box_a.own_interval();
-        let mut cols = Self {
+    /// No column computed yet.
+    #[inline(always)]
+    pub fn new() -> Self {
+        Self {
             interval: [unbounded(); MAX_COLUMNS],
             bound_sq: [0.0; MAX_COLUMNS],
-            len: ssvs.len(),
+            done: 0,
+        }
+    }
+
+    /// Column `j`: B's SSV `j` in A's box frame and its squared gap to A's box (unbounded
+    /// and 0 beyond [`MAX_COLUMNS`]).
+    #[inline(always)]
+    pub fn get(&mut self, a: &Segment, b: &Segment, j: usize) -> (&LocalInterval, f64) {
+        if j >= MAX_COLUMNS {
+            return (&UNBOUNDED_REF.0, 0.0);
+        }
+        if self.done & (1 << j) == 0 {
+            let box_a = a.world_obb();
+            let iv = box_a.local_interval(&b.world_ssvs()[j]);
+            self.bound_sq[j] = iv.distance_squared(&box_a.own_interval());
+            self.interval[j] = iv;
+            self.done |= 1 << j;
+        }
+        (&self.interval[j], self.bound_sq[j])
+    }
+}
+
+/// Holder of the unbounded interval for untracked columns.
+struct Unbounded(LocalInterval);
+/// The unbounded interval (a `static` cannot call `Vector3::repeat`, so it is spelled out).
+static UNBOUNDED_REF: Unbounded = Unbounded(LocalInterval {
+    lo: Vector3::new(f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY),
+    hi: Vector3::new(f64::INFINITY, f64::INFINITY, f64::INFINITY),
+});
+
+/// Whether a signed lower bound excludes a distance below `best`.
+#[inline(always)]
+pub(super) fn axis_excludes(lower: f64, best: f64) -> bool {
+    lower >= best + SLACK
+}
+
+/// The unit direction from A's box centre to B's (`None` if they coincide).
+#[inline(always)]
+pub(super) fn box_axis(a: &Segment, b: &Segment) -> Option<Vector3<f64>> {
+    let d = b.world_obb().center - a.world_obb().center;
+    let n2 = d.norm_squared();
+    if n2 > 0.0 && n2.is_finite() {
+        Some(d / n2.sqrt())
+    } else {
+        None
+    }
+}
+
+/// `max x . n` over an SSV (radius included); -inf without an axis (bounds nothing).
+#[inline(always)]
+pub(super) fn axis_max(s: &Ssv, n: Option<&Vector3<f64>>) -> f64 {
+    match n {
+        Some(n) => {
+            let m = s
+                .vertices()
+                .iter()
+                .map(|v| v.coords.dot(n))
+                .fold(f64::NEG_INFINITY, f64::max);
+            m + s.radius()
+        }
+        None => f64::NEG_INFINITY,
+    }
+}
+
+/// `min x . n` over each SSV of B (radius included), for the first [`MAX_COLUMNS`] SSVs;
+/// +inf without an axis... so that differences with [`axis_max`] never exclude.
+pub(super) struct AxisSupport {
+    lo: [f64; MAX_COLUMNS],
+    min: f64,
+}
+
+impl AxisSupport {
+    /// The supports of `ssvs` along `n`.
+    #[inline(always)]
+    pub fn new(ssvs: &[Ssv], n: Option<&Vector3<f64>>) -> Self {
+        let mut sup = Self {
+            lo: [f64::NEG_INFINITY; MAX_COLUMNS],
+            min: f64::NEG_INFINITY,
         };
-        if ssvs.len() <= MAX_COLUMNS {
-            for ((iv, sq), s) in cols.interval.iter_mut().zip(&mut cols.bound_sq).zip(ssvs) {
-                *iv = box_a.local_interval(s);
-                *sq = iv.distance_squared(&own);
+        if let Some(n) = n {
+            if ssvs.len() <= MAX_COLUMNS {
+                let mut min = f64::INFINITY;
+                for (lo, s) in sup.lo.iter_mut().zip(ssvs) {
+                    let m = s
+                        .vertices()
+                        .iter()
+                        .map(|v| v.coords.dot(n))
+                        .fold(f64::INFINITY, f64::min);
+                    *lo = m - s.radius();
+                    min = min.min(*lo);
+                }
+                sup.min = min;
             }
         }
-        cols
+        sup
     }
 
-    /// Number of columns (SSVs of B).
+    /// Support of SSV `j` (-inf when untracked).
     #[inline(always)]
-    pub fn len(&self) -> usize {
-        self.len
+    pub fn get(&self, j: usize) -> f64 {
+        self.lo.get(j).copied().unwrap_or(f64::NEG_INFINITY)
     }
 
-    /// Squared lower bound of column `j` against A's whole box (0 when untracked).
+    /// Smallest support over all SSVs.
     #[inline(always)]
-    pub fn bound_sq(&self, j: usize) -> f64 {
-        match self.bound_sq.get(j) {
-            Some(&b) if self.len <= MAX_COLUMNS => b,
-            _ => 0.0,
-        }
-    }
-
-    /// Whether every column is excluded from beating `cutoff`.
-    #[inline]
-    pub fn all_excluded(&self, cutoff: f64) -> bool {
-        self.len <= MAX_COLUMNS
-            && self.bound_sq[..self.len]
-                .iter()
-                .all(|&b| excludes(b, cutoff))
-    }
-
-    /// Squared interval bound of pair (i, j) in A's box frame (0 when untracked).
-    #[inline(always)]
-    fn pair_sq(&self, a: &Segment, i: usize, j: usize) -> f64 {
-        match self.interval.get(j) {
-            Some(iv) if self.len <= MAX_COLUMNS => a.ssv_intervals()[i].distance_squared(iv),
-            _ => 0.0,
-        }
+    pub fn min(&self) -> f64 {
+        self.min
     }
 }
 
@@ -120,42 +184,29 @@ pub(super) fn row(a: &Segment, b: &Segment, i: usize) -> (LocalInterval, f64) {
     (iv, lb)
 }
 
-/// Squared interval bound of pair (i, j): the larger of the bounds in B's and A's box frames.
+/// Squared interval bound of pair (i, j) with row `i`'s interval: the larger of the bounds
+/// in B's and A's box frames.
 #[inline(always)]
 pub(super) fn pair_sq(
     a: &Segment,
     b: &Segment,
-    cols: &Columns,
+    cols: &mut Columns,
     i: usize,
     row: &LocalInterval,
     j: usize,
 ) -> f64 {
     let in_b = row.distance_squared(&b.ssv_intervals()[j]);
-    in_b.max(cols.pair_sq(a, i, j))
-}
-
-/// Whether pair (i, j) is excluded from beating `best`, given row `i`'s interval.
-#[inline(always)]
-pub(super) fn pair_excludes(
-    a: &Segment,
-    b: &Segment,
-    cols: &Columns,
-    i: usize,
-    row: &LocalInterval,
-    j: usize,
-    best: f64,
-) -> bool {
-    sphere_excludes(&a.world_spheres()[i], &b.world_spheres()[j], best)
-        || excludes(pair_sq(a, b, cols, i, row, j), best)
+    let (col, _) = cols.get(a, b, j);
+    in_b.max(a.ssv_intervals()[i].distance_squared(col))
 }
 
 /// A promising first pair for an unbounded search: the smallest interval bound, ties (zero
 /// bounds) broken by the sphere bound.
-pub(super) fn seed(a: &Segment, b: &Segment, cols: &Columns) -> Option<(usize, usize)> {
+pub(super) fn seed(a: &Segment, b: &Segment, cols: &mut Columns) -> Option<(usize, usize)> {
     let mut best: Option<(usize, usize, f64, f64)> = None;
     for i in 0..a.len() {
         let (iv, _) = row(a, b, i);
-        for j in 0..cols.len() {
+        for j in 0..b.len() {
             let box_sq = pair_sq(a, b, cols, i, &iv, j);
             let key = if box_sq > 0.0 {
                 f64::INFINITY

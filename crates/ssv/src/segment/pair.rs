@@ -137,13 +137,12 @@ fn search<F>(
 where
     F: FnMut(&Ssv, &Ssv) -> DistanceResult,
 {
-    let cols = Columns::new(a, b);
-    if cols.all_excluded(cutoff) {
-        return None;
-    }
+    let mut cols = Columns::new();
     let (wa, wb) = (a.world_ssvs(), b.world_ssvs());
+    let (sa, sb) = (a.world_spheres(), b.world_spheres());
     let mut best: Option<ClosestPair> = None;
     let mut best_d = cutoff;
+    // Evaluates pair (i, j); returns its normal.
     let mut consider = |i: usize, j: usize, best_d: &mut f64| {
         let result = dist(&wa[i], &wb[j]);
         if result.distance < *best_d {
@@ -154,24 +153,46 @@ where
                 ssv_b: j,
             });
         }
+        result.normal
     };
     let seed = match hint {
         Some((i, j)) if i < wa.len() && j < wb.len() => Some((i, j)),
-        _ if cutoff == f64::INFINITY => bounds::seed(a, b, &cols),
+        _ if cutoff == f64::INFINITY => bounds::seed(a, b, &mut cols),
         _ => None,
     };
-    if let Some((i, j)) = seed {
-        consider(i, j, &mut best_d);
-    }
+    // Any unit axis gives a valid bound; the seed pair's normal is a good one, else the
+    // direction between the two boxes.
+    let axis = match seed {
+        Some((i, j)) => Some(consider(i, j, &mut best_d)),
+        None => bounds::box_axis(a, b),
+    };
+    // Separating-axis bound along n: d(i, j) >= min_B_j(x . n) -
+    // max_A_i(x . n) (radii included), so SSVs behind the first pair along n drop out
+    // with one subtraction per pair.
+    let lo_b = bounds::AxisSupport::new(wb, axis.as_ref());
+    // Whole rows by the axis and row bounds, then pairs by the axis and sphere bounds (no
+    // transform); the box-frame interval of a column is computed only for pairs that
+    // survive those.
     for i in 0..wa.len() {
-        let (row, row_sq) = bounds::row(a, b, i);
+        let hi_a = bounds::axis_max(&wa[i], axis.as_ref());
+        if bounds::axis_excludes(lo_b.min() - hi_a, best_d) {
+            continue;
+        }
+        let (row_iv, row_sq) = bounds::row(a, b, i);
         if bounds::excludes(row_sq, best_d) {
             continue;
         }
         for j in 0..wb.len() {
-            if bounds::excludes(cols.bound_sq(j), best_d)
+            if bounds::axis_excludes(lo_b.get(j) - hi_a, best_d)
+                || bounds::sphere_excludes(&sa[i], &sb[j], best_d)
                 || seed == Some((i, j))
-                || bounds::pair_excludes(a, b, &cols, i, &row, j, best_d)
+            {
+                continue;
+            }
+            let (col_iv, col_sq) = cols.get(a, b, j);
+            if bounds::excludes(col_sq, best_d)
+                || bounds::excludes(row_iv.distance_squared(&b.ssv_intervals()[j]), best_d)
+                || bounds::excludes(a.ssv_intervals()[i].distance_squared(col_iv), best_d)
             {
                 continue;
             }
