@@ -1,59 +1,41 @@
-//! The nine edge-edge pairs of TT (6.4.6) in structure-of-arrays form, so the LL solves of
-//! (6.31) and Tables 6.3/6.4 run as packed SIMD operations; nearly parallel pairs are then
-//! redone with the orthogonalised solve of [`super::line_line`].
+//! The nine edge-edge pairs of TT (6.4.6): each pair is the LL solve of (6.31) with the two
+//! saturation steps of Tables 6.3/6.4, using the edge lengths and reciprocals the triangle
+//! frames already hold; nearly parallel pairs take the orthogonalised solve of
+//! [`super::line_line`]. The nearest pair is selected without branches.
 
 use super::assemble::{clamp01, key_index, min_key};
 use super::line_line::{near_parallel_s, WELL_CONDITIONED};
 use super::triangle_frame::TriFrame;
-use nalgebra::Vector3;
+
+/// Closest points of edge i of `a` and edge j of `b`: squared distance and parameters (s, t).
+#[inline(always)]
+pub(crate) fn edge_pair(a: &TriFrame, b: &TriFrame, i: usize, j: usize) -> (f64, f64, f64) {
+    let (u, v) = (&a.e[i], &b.e[j]);
+    let w = b.v[j] - a.v[i];
+    let (uv, uw, vw) = (u.dot(v), u.dot(&w), v.dot(&w));
+    let (uu, vv) = (a.ee[i], b.ee[j]);
+    let n = uu * vv - uv * uv;
+    let s0 = if n > WELL_CONDITIONED * uu * vv {
+        (vv * uw - uv * vw) / n
+    } else {
+        near_parallel_s(u, v, &w, uv, vw, b.inv_ee[j])
+    };
+    let t = clamp01((clamp01(s0) * uv - vw) * b.inv_ee[j]);
+    let s = clamp01((uw + t * uv) * a.inv_ee[i]);
+    let c = w + v * t - u * s;
+    (c.x * c.x + c.y * c.y + c.z * c.z, s, t)
+}
 
 /// Nearest edge pair: squared distance, pair index 3 i + j and parameters (s, t) on edge i of
 /// `a` and edge j of `b`.
-#[allow(clippy::needless_range_loop)] // lane loops over parallel arrays
 #[inline(always)]
 pub(crate) fn nearest_edge_pair(a: &TriFrame, b: &TriFrame) -> (f64, usize, f64, f64) {
-    let mut w = [[0.0; 9]; 3];
-    let (mut u, mut v) = ([[0.0; 9]; 3], [[0.0; 9]; 3]);
-    let (mut uu, mut vv, mut iu, mut iv) = ([0.0; 9], [0.0; 9], [0.0; 9], [0.0; 9]);
-    for k in 0..9 {
-        let (i, j) = (k / 3, k % 3);
-        let d = b.v[j] - a.v[i];
-        for c in 0..3 {
-            w[c][k] = d[c];
-            u[c][k] = a.e[i][c];
-            v[c][k] = b.e[j][c];
-        }
-        (uu[k], vv[k], iu[k], iv[k]) = (a.ee[i], b.ee[j], a.inv_ee[i], b.inv_ee[j]);
-    }
-    let dot = |x: &[[f64; 9]; 3], y: &[[f64; 9]; 3], k: usize| {
-        x[0][k] * y[0][k] + x[1][k] * y[1][k] + x[2][k] * y[2][k]
-    };
-    let (mut uv, mut uw, mut vw, mut s0) = ([0.0; 9], [0.0; 9], [0.0; 9], [0.0; 9]);
-    let mut ill = [false; 9];
-    for k in 0..9 {
-        (uv[k], uw[k], vw[k]) = (dot(&u, &v, k), dot(&u, &w, k), dot(&v, &w, k));
-        let n = uu[k] * vv[k] - uv[k] * uv[k];
-        s0[k] = (vv[k] * uw[k] - uv[k] * vw[k]) / n;
-        let well = n > WELL_CONDITIONED * uu[k] * vv[k];
-        ill[k] = !well;
-    }
-    for k in 0..9 {
-        if ill[k] {
-            let col = |x: &[[f64; 9]; 3]| Vector3::new(x[0][k], x[1][k], x[2][k]);
-            s0[k] = near_parallel_s(&col(&u), &col(&v), &col(&w), uv[k], vw[k], iv[k]);
-        }
-    }
-    let (mut s, mut t, mut d2) = ([0.0; 9], [0.0; 9], [0.0; 9]);
-    for k in 0..9 {
-        t[k] = clamp01((clamp01(s0[k]) * uv[k] - vw[k]) * iv[k]);
-        s[k] = clamp01((uw[k] + t[k] * uv[k]) * iu[k]);
-        let c = |x: usize| w[x][k] + v[x][k] * t[k] - u[x][k] * s[k];
-        d2[k] = c(0) * c(0) + c(1) * c(1) + c(2) * c(2);
-    }
+    let mut all = [(0.0, 0.0, 0.0); 9];
     let mut key = u64::MAX;
-    for k in 0..9 {
-        key = key.min(min_key(d2[k], k));
+    for (k, x) in all.iter_mut().enumerate() {
+        *x = edge_pair(a, b, k / 3, k % 3);
+        key = key.min(min_key(x.0, k));
     }
     let k = key_index(key);
-    (d2[k], k, s[k], t[k])
+    (all[k].0, k, all[k].1, all[k].2)
 }

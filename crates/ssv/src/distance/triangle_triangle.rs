@@ -17,7 +17,7 @@
 //! the closest pair. Only when neither holds are all candidates compared.
 
 use super::assemble::{assemble, clamp01, edge_to_tri, Closest, Geom};
-use super::edge_pairs::nearest_edge_pair;
+use super::edge_pairs::{edge_pair, nearest_edge_pair};
 use super::triangle_frame::{Proj, TriFrame};
 use crate::primitives::Tss;
 use crate::result::{DistanceResult, PrimitiveParam};
@@ -116,20 +116,18 @@ fn vertex_face(a: &TriFrame, b: &TriFrame, w: &[Proj; 3], swap: bool, best: &mut
     }
 }
 
-/// The nearest of the nine edge-edge pairs (branch-free selection of the minimum) and its
-/// pair index 3 i + j.
+/// The nearest of the nine edge-edge pairs (branch-free selection of the minimum).
 #[inline(always)]
-fn edge_pairs(a: &TriFrame, b: &TriFrame) -> (Best, usize) {
+fn edge_pairs(a: &TriFrame, b: &TriFrame) -> Best {
     let (d2, ij, s, t) = nearest_edge_pair(a, b);
     let (i, j) = (ij / 3, ij % 3);
-    let x = Best {
+    Best {
         d2,
         sa: edge_to_tri(i, s),
         sb: edge_to_tri(j, t),
         pa: a.v[i] + a.e[i] * s,
         pb: b.v[j] + b.e[j] * t,
-    };
-    (x, ij)
+    }
 }
 
 /// Early exit when `a` lies on one side of the (non-flat) plane of `b`: its vertex nearest
@@ -164,17 +162,104 @@ fn nearest_to_plane(w: &[Proj; 3]) -> usize {
     }
 }
 
-/// Whether the plane through the closest points of an edge pair, normal to c*, separates
-/// the triangles, which proves the pair globally closest. The two end points of each edge
-/// are on their side by the optimality of the edge pair (c* is normal to the edge at an
-/// interior point, points away from the edge at an end point), so only the third vertex of
-/// each triangle is tested.
+/// Relative slack of the separation test: a vertex may lie this fraction of the triangles'
+/// size beyond the plane, so the certified pair is within 2e-12 of that size from optimal.
+const SEPARATION_SLACK: f64 = 1e-12;
+
+/// Whether the plane through the closest points `pa`, `pb` of a candidate pair, normal to
+/// c* = pb - pa, separates the triangles (every vertex of `a` on the side of `pa`, every
+/// vertex of `b` on the side of `pb`, up to [`SEPARATION_SLACK`]). Then no pair is closer
+/// than |c*| (minus that slack): the candidate is the closest pair. All six vertices are
+/// tested; relying on the optimality of the edge pair for the edge end points is not safe
+/// when c* is tiny and its direction is dominated by rounding.
 #[inline(always)]
-fn separates(a: &TriFrame, b: &TriFrame, ij: usize, x: &Best) -> bool {
-    let c = x.pb - x.pa;
-    let (i, j) = (ij / 3, ij % 3);
-    let (oa, ob) = (a.v[(i + 2) % 3], b.v[(j + 2) % 3]);
-    ((oa - x.pa).dot(&c) <= 0.0) & ((ob - x.pb).dot(&c) >= 0.0)
+fn separates(a: &TriFrame, b: &TriFrame, pa: &Point3<f64>, pb: &Point3<f64>, size: f64) -> bool {
+    let c = pb - pa;
+    let tol = SEPARATION_SLACK * size * c.amax();
+    let ha = (0..3)
+        .map(|k| (a.v[k] - pa).dot(&c))
+        .fold(f64::NEG_INFINITY, f64::max);
+    let hb = (0..3)
+        .map(|k| (b.v[k] - pb).dot(&c))
+        .fold(f64::INFINITY, f64::min);
+    (ha <= tol) & (hb >= -tol)
+}
+
+/// The size of two triangles for [`SEPARATION_SLACK`]: their largest edge component.
+#[inline(always)]
+fn size_of(a: &TriFrame, b: &TriFrame) -> f64 {
+    let m = |f: &TriFrame| f.e[0].amax().max(f.e[1].amax()).max(f.e[2].amax());
+    m(a).max(m(b))
+}
+
+/// Steps of [`edge_walk`] before the full enumeration takes over.
+const WALK_STEPS: usize = 3;
+
+/// The edge of a triangle to start from: of the two edges at the vertex nearest to the other
+/// plane, the one whose other end is nearer too.
+#[inline(always)]
+fn start_edge(w: &[Proj; 3]) -> usize {
+    let k = nearest_to_plane(w);
+    let (next, prev) = ((k + 1) % 3, (k + 2) % 3);
+    if w[next].h.abs() <= w[prev].h.abs() {
+        k
+    } else {
+        prev
+    }
+}
+
+/// The edge to move to when the third vertex of a triangle lies beyond the plane of the
+/// edge pair: the edge joining that vertex to the end point nearer to the closest point.
+#[inline(always)]
+fn next_edge(i: usize, s: f64) -> usize {
+    if s < 0.5 {
+        (i + 2) % 3
+    } else {
+        (i + 1) % 3
+    }
+}
+
+/// A few steps of a feature walk over edge pairs (PQP-style): solve one edge pair, accept it
+/// if its connecting plane separates the triangles ([`separates`], which proves it globally
+/// closest), else move each failing side to the edge at its offending vertex. `None` when no
+/// pair is certified within [`WALK_STEPS`] steps.
+#[inline(always)]
+fn edge_walk(
+    a: &TriFrame,
+    b: &TriFrame,
+    wa: &[Proj; 3],
+    wb: &[Proj; 3],
+    size: f64,
+) -> Option<Best> {
+    let (mut i, mut j) = (start_edge(wa), start_edge(wb));
+    for _ in 0..WALK_STEPS {
+        let (d2, s, t) = edge_pair(a, b, i, j);
+        let (pa, pb) = (a.v[i] + a.e[i] * s, b.v[j] + b.e[j] * t);
+        // The third vertices first: a side whose third vertex lies beyond the plane moves
+        // to the edge at that vertex.
+        let c = pb - pa;
+        let fail_a = (a.v[(i + 2) % 3] - pa).dot(&c) > 0.0;
+        let fail_b = (b.v[(j + 2) % 3] - pb).dot(&c) < 0.0;
+        if !(fail_a | fail_b) {
+            if !separates(a, b, &pa, &pb, size) {
+                return None;
+            }
+            return Some(Best {
+                d2,
+                sa: edge_to_tri(i, s),
+                sb: edge_to_tri(j, t),
+                pa,
+                pb,
+            });
+        }
+        if fail_a {
+            i = next_edge(i, s);
+        }
+        if fail_b {
+            j = next_edge(j, t);
+        }
+    }
+    None
 }
 
 /// Closest pair of two triangles; a flat triangle contributes only its edges. Cheap exits
@@ -202,8 +287,12 @@ fn enumerate(a: &TriFrame, b: &TriFrame) -> Best {
     if let Some(x) = one_sided_vertex_face(b, a, &wb, true) {
         return x;
     }
-    let (mut best, ij) = edge_pairs(a, b);
-    if separates(a, b, ij, &best) {
+    let size = size_of(a, b);
+    if let Some(x) = edge_walk(a, b, &wa, &wb, size) {
+        return x;
+    }
+    let mut best = edge_pairs(a, b);
+    if separates(a, b, &best.pa, &best.pb, size) {
         return best;
     }
     if !b.flat {
@@ -337,6 +426,42 @@ mod tests {
                 assert!(brute - r.distance <= 0.1 * scale);
                 check_rigid(&a, &b, &rand_pose(&mut rng, scale), 4.0 * scale);
             }
+        }
+    }
+
+    /// Regression: `a` lies exactly in a plane y = const and `b` crosses it by 1e-14 (size
+    /// 2e-6), so c* of the edge pairs is ~1e-14 and its direction is rounding-dominated; an
+    /// edge-pair certificate that trusted the edge end points to lie on their side accepted
+    /// a pair 3.8e-15 too far. The bound is the independent KKT reference solver's value
+    /// (tests/reference) plus the property suites' relative tolerance 1e-9.
+    #[test]
+    fn nearly_coplanar_certificate_regression() {
+        let y = -1.6349601207828632e-6;
+        let a = tss(
+            [-1.8952805543412078e-6, y, 8.58331400263908e-7],
+            [-1.519132188686816e-6, y, -1.3592983134529915e-6],
+            [1.2438420219797928e-6, y, 4.806011117405918e-7],
+            0.0,
+        );
+        let b = tss(
+            [1.2029591581986686e-6, -1.6349601416886416e-6, 0.0],
+            [
+                5.441267794276451e-7,
+                -1.634960107823577e-6,
+                -1.0381844835793765e-6,
+            ],
+            [
+                9.78989644150592e-7,
+                -1.6349601301762413e-6,
+                6.237992517427993e-7,
+            ],
+            0.0,
+        );
+        let d_ref = 4.188517361316793e-15;
+        let scale = 1.8952805543412078e-6;
+        for r in [tt(&a, &b), tt(&b, &a)] {
+            assert!(r.distance <= d_ref + 1e-9 * scale, "{r:?}");
+            assert!(r.distance >= 0.0, "{r:?}");
         }
     }
 
