@@ -9,7 +9,10 @@
 //! can only make a candidate lose, never report a wrong distance. A flat
 //! triangle has no face candidates: it is the union of its edges (its longest edge).
 //! The piercing test and a segment on one side of the plane with its nearer end point over
-//! the face are decided from the two end-point projections before any edge pair is solved.
+//! the face are decided from the two end-point projections before any edge pair is solved;
+//! then the edge opposite the nearer end point's most negative barycentric coordinate is
+//! tried with a separating-plane certificate (PQP-style), and only if that fails are all
+//! candidates compared.
 
 use super::assemble::{assemble, clamp01, edge_to_tri, key_index, min_key, Closest, Geom};
 use super::line_line::{segment_params, Seg};
@@ -70,6 +73,10 @@ pub(crate) fn segment_triangle(p: &Point3<f64>, u: &Vector3<f64>, f: &TriFrame) 
             return face_point(f, tv, &w, pv);
         }
     }
+    let near = if h1.abs() < h0.abs() { &w1 } else { &w0 };
+    if let Some(x) = edge_walk(p, u, f, likely_edge(near)) {
+        return x;
+    }
     let best = nearest_edge(p, u, f);
     // End points over the face: squared height h^2/|n|^2.
     let face = |w: &Proj| {
@@ -89,6 +96,66 @@ pub(crate) fn segment_triangle(p: &Point3<f64>, u: &Vector3<f64>, f: &TriFrame) 
         return face_point(f, tv, &w, pv);
     }
     best
+}
+
+/// Relative slack of the separation certificate (see the TT module): a vertex may lie this
+/// fraction of the primitives' size beyond the plane.
+const SEPARATION_SLACK: f64 = 1e-12;
+
+/// Steps of [`edge_walk`] before the full enumeration takes over.
+const WALK_STEPS: usize = 2;
+
+/// The boundary edge most likely closest to a point with plane projection `w`: the one
+/// opposite the most negative barycentric coordinate.
+#[inline(always)]
+fn likely_edge(w: &Proj) -> usize {
+    // Opposite v2 (weight s1): edge 0; opposite v0: edge 1; opposite v1 (weight s0): edge 2.
+    let b = [w.s1, 1.0 - w.s0 - w.s1, w.s0];
+    let k = if b[1] < b[0] { 1 } else { 0 };
+    if b[2] < b[k] {
+        2
+    } else {
+        k
+    }
+}
+
+/// A segment-edge pair certified globally closest: the plane through its closest points,
+/// normal to c*, has both segment end points on one side and all three triangle vertices
+/// on the other (up to [`SEPARATION_SLACK`]). Starting from edge `k`, a failing third
+/// vertex moves the walk to the edge at that vertex; `None` when nothing is certified.
+#[inline(always)]
+fn edge_walk(p: &Point3<f64>, u: &Vector3<f64>, f: &TriFrame, mut k: usize) -> Option<SegTri> {
+    let seg = Seg::new(*p, *u);
+    let size = u
+        .amax()
+        .max(f.e[0].amax())
+        .max(f.e[1].amax())
+        .max(f.e[2].amax());
+    for _ in 0..WALK_STEPS {
+        let (t, s) = segment_params(&seg, &f.edge(k));
+        let (pl, pt) = (p + u * t, f.v[k] + f.e[k] * s);
+        let c = pt - pl;
+        if (f.v[(k + 2) % 3] - pt).dot(&c) < 0.0 {
+            k = if s < 0.5 { (k + 2) % 3 } else { (k + 1) % 3 };
+            continue;
+        }
+        let tol = SEPARATION_SLACK * size * c.amax();
+        let hl = (p - pl).dot(&c).max((p + u - pl).dot(&c));
+        let ht = (0..3)
+            .map(|i| (f.v[i] - pt).dot(&c))
+            .fold(f64::INFINITY, f64::min);
+        if (hl <= tol) & (ht >= -tol) {
+            return Some(SegTri {
+                d2: c.norm_squared(),
+                t,
+                s: edge_to_tri(k, s),
+                pl,
+                pt,
+            });
+        }
+        return None;
+    }
+    None
 }
 
 /// The pair of end point `pv` (segment parameter `tv`) and its projection `w` into the face.
