@@ -5,6 +5,7 @@ use super::source::{Loaded, ModelSource};
 use super::CliResult;
 use biped_dynamics::dill::{dill, dill_test_state};
 use biped_dynamics::{forward_dynamics, on, Algorithm, Data, Model};
+use biped_robots::lola::{self, LolaType};
 use nalgebra::DVector;
 use rand::{Rng, SeedableRng};
 use serde::Serialize;
@@ -39,6 +40,10 @@ pub struct Timings {
     pub bw: f64,
     /// O(n) second forward pass (accelerations).
     pub fw2: f64,
+    /// Relative run time `eta(O(n^3)) = t_crba / t_on` (thesis 2.10.2, Table 2.6).
+    pub eta_crba: f64,
+    /// Relative run time `eta(sparse) = t_sparse / t_on`.
+    pub eta_sparse: f64,
 }
 
 /// Median nanoseconds per call of `f`, after a warm-up that also sizes the batches.
@@ -129,6 +134,8 @@ pub fn time_model(
         fw1,
         bw,
         fw2,
+        eta_crba: crba / on_ns,
+        eta_sparse: sparse / on_ns,
     })
 }
 
@@ -174,6 +181,7 @@ pub fn run_one(source: &ModelSource, json: bool) -> CliResult {
             let (q, v) = dill_test_state(&model);
             (q, v, DVector::zeros(model.nv()))
         }
+        ModelSource::Lola(t) => lola_state(*t, 1)?,
         _ => random_state(&model, 1),
     };
     let t = time_model(&model, &q, &v, &tau)?;
@@ -182,8 +190,43 @@ pub fn run_one(source: &ModelSource, json: bool) -> CliResult {
     } else {
         println!("{label}: nv = {}", t.nv);
         print_table(std::slice::from_ref(&t));
+        if let ModelSource::Lola(kind) = source {
+            print_lola(&model, *kind, &t);
+        }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// A state `(q, v, tau)`.
+type State = (DVector<f64>, DVector<f64>, DVector<f64>);
+
+/// A reproducible Lola state with joints inside their (mechanism) ranges, random torques.
+fn lola_state(kind: LolaType, seed: u64) -> Result<State, Box<dyn std::error::Error>> {
+    let lm = lola::build(kind)?;
+    let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+    let (q, v) = lm.random_state(&mut |a, b| rng.random_range(a..b));
+    let tau = DVector::from_fn(lm.model.nv(), |_, _| rng.random_range(-1.0..1.0));
+    Ok((q, v, tau))
+}
+
+/// The Lola lines of Table 2.6 / Table 2.4: sub-systems, sparsity, relative run times.
+fn print_lola(model: &Model, kind: LolaType, t: &Timings) {
+    let s = lola::sparsity(model);
+    let thesis = match kind {
+        LolaType::Type2 => "0.94-1.16 / 0.90-1.13",
+        LolaType::Type3 => "1.41-1.67 / 1.24-1.48",
+    };
+    println!(
+        "sub-systems {}, mass-matrix non-zeros {} of {} (alpha {:.3}, Table 2.4)",
+        model.subsystems().len(),
+        s.nonzero,
+        s.dense,
+        s.alpha
+    );
+    println!(
+        "eta(O(n^3)) = {:.3}, eta(sparse) = {:.3} (thesis Table 2.6: {thesis})",
+        t.eta_crba, t.eta_sparse
+    );
 }
 
 /// `biped bench dynamics --dill-range A..B`: every level, a table or JSON array, and an SVG plot.

@@ -1,7 +1,9 @@
-//! Where a model comes from (`--urdf`, `--dill`): one enum, one loader, one JSON description.
+//! Where a model comes from (`--urdf`, `--dill`, `--lola`): one enum, one loader, one JSON
+//! description.
 
 use biped_dynamics::urdf::{load_file, UrdfOptions};
 use biped_dynamics::Model;
+use biped_robots::lola::{self, LolaType};
 use clap::Args;
 use serde::Serialize;
 use std::path::PathBuf;
@@ -21,6 +23,9 @@ pub struct SourceArgs {
     /// Use Featherstone's Dill(N) benchmark tree (2^N revolute bodies, thesis 2.10.1).
     #[arg(long, value_name = "N")]
     dill: Option<u32>,
+    /// Use the Lola-like biped (thesis Table 2.3): `type2` rigid drives, `type3` elastic gears.
+    #[arg(long, value_name = "TYPE", group = "source")]
+    lola: Option<LolaType>,
 }
 
 /// A model source; adding one is one variant here and one arm in [`ModelSource::load`].
@@ -29,6 +34,8 @@ pub enum ModelSource {
     Urdf(PathBuf, UrdfOptions),
     /// Dill(n).
     Dill(u32),
+    /// The Lola-like biped of `crates/robots/data/lola.toml`.
+    Lola(LolaType),
 }
 
 /// A loaded model and a short label for reports.
@@ -42,16 +49,19 @@ pub struct Loaded {
 impl SourceArgs {
     /// The selected source (clap guarantees at most one; none is an error).
     pub fn to_source(&self) -> Result<ModelSource, String> {
-        match (&self.urdf, self.dill) {
-            (Some(path), None) => Ok(ModelSource::Urdf(
+        match (&self.urdf, self.dill, self.lola) {
+            (Some(path), None, None) => Ok(ModelSource::Urdf(
                 path.clone(),
                 UrdfOptions {
                     floating: self.floating,
                     reject_mimic: self.reject_mimic,
                 },
             )),
-            (None, Some(n)) => Ok(ModelSource::Dill(n)),
-            _ => Err("give exactly one model source: --urdf FILE or --dill N".into()),
+            (None, Some(n), None) => Ok(ModelSource::Dill(n)),
+            (None, None, Some(t)) => Ok(ModelSource::Lola(t)),
+            _ => Err(
+                "give exactly one model source: --urdf FILE, --dill N or --lola type2|type3".into(),
+            ),
         }
     }
 }
@@ -74,6 +84,10 @@ impl ModelSource {
                 model: biped_dynamics::dill::dill(*n)?,
                 label: format!("Dill({n})"),
             },
+            ModelSource::Lola(t) => Loaded {
+                model: lola::build(*t)?.model,
+                label: format!("Lola {t:?}"),
+            },
         })
     }
 }
@@ -94,9 +108,12 @@ pub struct ModelJson<'a> {
     joints: Vec<JointJson<'a>>,
     bodies: Vec<&'a str>,
     neutral: Vec<f64>,
+    /// Member bodies of every sub-system (2.9); empty for loop-free models.
+    subsystems: Vec<Vec<&'a str>>,
 }
 
-/// The JSON description of a model: sizes, joints in coordinate order, bodies, neutral q.
+/// The JSON description of a model: sizes, joints in coordinate order, bodies, neutral q,
+/// sub-systems.
 pub fn describe(model: &Model) -> ModelJson<'_> {
     ModelJson {
         nq: model.nq(),
@@ -112,5 +129,6 @@ pub fn describe(model: &Model) -> ModelJson<'_> {
             .collect(),
         bodies: model.body_names(),
         neutral: model.neutral().iter().copied().collect(),
+        subsystems: model.subsystem_names(),
     }
 }
