@@ -172,3 +172,75 @@ fn bad_files_name_file_line_and_field() {
         "{e}"
     );
 }
+
+#[test]
+fn pose_and_constraint_errors_point_into_their_own_element() {
+    let good = std::fs::read_to_string(EXAMPLE).unwrap();
+    let fix = |s: &str| {
+        s.replace(
+            "../../dynamics",
+            concat!(env!("CARGO_MANIFEST_DIR"), "/../dynamics"),
+        )
+    };
+    // Rename the knee encoder of the third pose only (the 4th occurrence after `joints`).
+    let third = good.match_indices("\"left_knee_joint\":").nth(2).unwrap().0;
+    let bad = format!("{}\"left_knees\":{}", &good[..third], &good[third + 18..]);
+    let line = bad[..third].matches('\n').count() + 1;
+    let e = error_of(&fix(&bad), "pose3");
+    assert!(
+        e.contains(&format!(":{line}: poses[2].encoders.left_knees")),
+        "{e} (line {line})"
+    );
+    // Unknown link in the second constraint's frame_b.
+    let second = good
+        .match_indices("\"right_ankle_roll_link\"")
+        .next()
+        .unwrap()
+        .0;
+    let bad = format!(
+        "{}\"right_foot_x\"{}",
+        &good[..second],
+        &good[second + 23..]
+    );
+    let line = bad[..second].matches('\n').count() + 1;
+    let e = error_of(&fix(&bad), "link2");
+    assert!(
+        e.contains(&format!(":{line}: constraints[1].frame_b.link")),
+        "{e} (line {line})"
+    );
+}
+
+#[test]
+fn non_finite_or_inconsistent_input_is_a_typed_error() {
+    use biped_robots::calibration::CalibrationProblem;
+    let g1 = load(&g1_xml());
+    let s = Synthetic {
+        joints: leg_names(),
+        offsets: random_offsets(12, 1),
+        noise: 0.0,
+        poses: 1,
+        seed: 1,
+    };
+    let p = problem(&g1, &g1, &s, Components::Pose);
+    let mut poses = p.poses().to_vec();
+    poses[0].q_measured[3] = f64::NAN;
+    let r = CalibrationProblem::new(
+        p.model().clone(),
+        p.joints().to_vec(),
+        p.constraints().to_vec(),
+        poses,
+    );
+    assert!(matches!(r, Err(CalibrationError::NonFinite(_))));
+    let r = CalibrationProblem::new(
+        p.model().clone(),
+        vec![],
+        p.constraints().to_vec(),
+        p.poses().to_vec(),
+    );
+    assert!(matches!(r, Err(CalibrationError::Invalid(_))));
+    let x = nalgebra::DVector::from_element(12, f64::INFINITY);
+    assert!(matches!(
+        p.residual(&x),
+        Err(CalibrationError::NonFinite(_))
+    ));
+}

@@ -172,12 +172,60 @@ fn key_before(text: &str, offset: usize) -> Option<String> {
     None
 }
 
-/// 1-based line of the first occurrence of `"needle"` in `text` (0 if absent).
-fn line_of(text: &str, needle: &str) -> usize {
+/// 1-based line of the first occurrence of `"needle"` in `text` at or after byte `from`,
+/// else of the first occurrence anywhere (0 if absent).
+fn line_of(text: &str, needle: &str, from: usize) -> usize {
     let quoted = format!("\"{needle}\"");
-    text.find(&quoted)
+    let from = from.min(text.len());
+    text[from..]
+        .find(&quoted)
+        .map(|p| p + from)
+        .or_else(|| text.find(&quoted))
         .map(|p| text[..p].matches('\n').count() + 1)
         .unwrap_or(0)
+}
+
+/// Byte offset of element `index` of the top-level array `"key": [...]` (0 if not found).
+fn array_element(text: &str, key: &str, index: usize) -> usize {
+    let quoted = format!("\"{key}\"");
+    let Some(k) = text.find(&quoted) else {
+        return 0;
+    };
+    let Some(open) = text[k..].find('[').map(|p| p + k) else {
+        return 0;
+    };
+    let (mut depth, mut in_str, mut escaped, mut seen) = (0usize, false, false, 0usize);
+    for (p, ch) in text[open..].char_indices() {
+        if in_str {
+            (escaped, in_str) = match (escaped, ch) {
+                (true, _) => (false, true),
+                (false, '\\') => (true, true),
+                (false, '"') => (false, false),
+                _ => (false, true),
+            };
+            continue;
+        }
+        match ch {
+            '"' => in_str = true,
+            '[' | '{' => {
+                depth += 1;
+                if depth == 2 {
+                    if seen == index {
+                        return open + p;
+                    }
+                    seen += 1;
+                }
+            }
+            ']' | '}' => {
+                depth = depth.saturating_sub(1);
+                if depth == 0 {
+                    return 0;
+                }
+            }
+            _ => {}
+        }
+    }
+    0
 }
 
 impl LoadedFile {
@@ -218,9 +266,20 @@ impl LoadedFile {
 
     /// A located error about the value `needle` in field `field`.
     pub fn error(&self, needle: &str, field: String, message: String) -> CalibrationError {
+        self.error_after(0, needle, field, message)
+    }
+
+    /// A located error about `needle`, searched from byte `from` on (e.g. inside one pose).
+    fn error_after(
+        &self,
+        from: usize,
+        needle: &str,
+        field: String,
+        message: String,
+    ) -> CalibrationError {
         CalibrationError::File {
             file: self.file.clone(),
-            line: line_of(&self.text, needle),
+            line: line_of(&self.text, needle, from),
             field,
             message,
         }
@@ -275,17 +334,23 @@ impl LoadedFile {
         urdf: &UrdfModel,
         f: &FrameSpec,
         field: String,
+        at: usize,
     ) -> Result<BodyFrame, CalibrationError> {
         let link = urdf.links.iter().find(|l| l.link == f.link);
         let Some(link) = link else {
-            return Err(self.error(&f.link, field, format!("no link `{}` in the URDF", f.link)));
+            return Err(self.error_after(
+                at,
+                &f.link,
+                field,
+                format!("no link `{}` in the URDF", f.link),
+            ));
         };
         let off = PoseSpec {
             xyz: f.xyz,
             rpy: f.rpy,
         };
         if !off.finite() {
-            return Err(self.error(&f.link, field, "non-finite offset".into()));
+            return Err(self.error_after(at, &f.link, field, "non-finite offset".into()));
         }
         Ok(BodyFrame {
             body: link.body,
@@ -318,10 +383,21 @@ impl LoadedFile {
             };
             return Err(self.error(&c.name, format!("constraints[{i}]"), why.into()));
         }
+        let at = array_element(&self.text, "constraints", i);
         Ok(JigConstraint {
             name: c.name.clone(),
-            a: self.frame(urdf, &c.frame_a, format!("constraints[{i}].frame_a.link"))?,
-            b: self.frame(urdf, &c.frame_b, format!("constraints[{i}].frame_b.link"))?,
+            a: self.frame(
+                urdf,
+                &c.frame_a,
+                format!("constraints[{i}].frame_a.link"),
+                at,
+            )?,
+            b: self.frame(
+                urdf,
+                &c.frame_b,
+                format!("constraints[{i}].frame_b.link"),
+                at,
+            )?,
             components: match c.components {
                 ComponentsSpec::Pose => Components::Pose,
                 ComponentsSpec::Position => Components::Position,
@@ -338,13 +414,16 @@ impl LoadedFile {
         i: usize,
         p: &PoseEntry,
     ) -> Result<JigPose, CalibrationError> {
+        let at = array_element(&self.text, "poses", i);
+        let err =
+            |needle: &str, field: String, msg: String| self.error_after(at, needle, field, msg);
         let mut q = model.neutral();
         for (name, value) in &p.encoders {
             let field = format!("poses[{i}].encoders.{name}");
             let j = CalibratedJoint::find(model, name)
-                .map_err(|e| self.error(name, field.clone(), e.to_string()))?;
+                .map_err(|e| err(name, field.clone(), e.to_string()))?;
             if !value.is_finite() {
-                return Err(self.error(name, field, "non-finite encoder value".into()));
+                return Err(err(name, field, "non-finite encoder value".into()));
             }
             q[j.q_index] = *value;
         }
@@ -353,10 +432,10 @@ impl LoadedFile {
             let field = format!("poses[{i}].targets.{name}");
             let c = self.spec.constraints.iter().position(|c| &c.name == name);
             let Some(c) = c else {
-                return Err(self.error(name, field, format!("no constraint named `{name}`")));
+                return Err(err(name, field, format!("no constraint named `{name}`")));
             };
             if !t.finite() {
-                return Err(self.error(name, field, "non-finite target".into()));
+                return Err(err(name, field, "non-finite target".into()));
             }
             targets.push((c, t.isometry()));
         }
