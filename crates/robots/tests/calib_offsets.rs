@@ -180,6 +180,17 @@ fn wrong_link_length_leaves_a_structured_residual() {
         left_mm > 2e-4,
         "left foot closure after calibration {left_mm:e} m"
     );
+    // Structured: the error sits in the left leg; the right leg's closure stays at noise level.
+    let right_mm: f64 = bad
+        .poses
+        .iter()
+        .map(|r| r.constraints[1].position_after)
+        .fold(0.0, f64::max);
+    eprintln!(
+        "wrong thigh: rms {:e} vs {:e}; left {left_mm:e} m, right {right_mm:e} m",
+        bad.rms_after, good.rms_after
+    );
+    assert!(right_mm < 0.05 * left_mm, "right foot {right_mm:e} m");
 }
 
 #[test]

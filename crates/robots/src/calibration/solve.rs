@@ -100,16 +100,16 @@ pub fn check_observability(
         .filter(|&i| norms[i].is_nan() || norms[i] <= tol * top.max(1e-300))
         .collect();
     if j.nrows() < k || !dead.is_empty() {
-        let list = if dead.is_empty() {
+        // Upper bound of the rank: fewer rows than unknowns, or zero columns.
+        let rank = (k - dead.len()).min(j.nrows());
+        let list: Vec<usize> = if dead.is_empty() {
             (0..k).collect()
         } else {
             dead
         };
         return Err(CalibrationError::Unobservable {
             joints: list.iter().map(|&i| names[i].clone()).collect(),
-            rank: k
-                .min(j.nrows())
-                .saturating_sub(if j.nrows() < k { 0 } else { 1 }),
+            rank,
             unknowns: k,
         });
     }
