@@ -234,6 +234,26 @@ impl Ssv {
             Ssv::Triangle(t) => &t.vertices,
         }
     }
+    /// Sets `self` to `body` moved by `x -> rot x + t`, in place (see
+    /// [`Pss::transformed_by`]); cheaper than assigning a new value when the kinds agree.
+    #[inline]
+    pub fn set_transformed_by(&mut self, body: &Ssv, rot: &Matrix3<f64>, t: &Vector3<f64>) {
+        match (self, body) {
+            (Ssv::Point(w), Ssv::Point(b)) => w.center = affine(rot, t, &b.center),
+            (Ssv::Line(w), Ssv::Line(b)) => {
+                for (x, v) in w.vertices.iter_mut().zip(&b.vertices) {
+                    *x = affine(rot, t, v);
+                }
+            }
+            (Ssv::Triangle(w), Ssv::Triangle(b)) => {
+                for (x, v) in w.vertices.iter_mut().zip(&b.vertices) {
+                    *x = affine(rot, t, v);
+                }
+            }
+            (w, b) => *w = b.transformed_by(rot, t),
+        }
+    }
+
     /// This SSV moved by `x -> rot x + t` (see [`Pss::transformed_by`]).
     #[inline]
     pub fn transformed_by(&self, rot: &Matrix3<f64>, t: &Vector3<f64>) -> Self {

@@ -89,3 +89,4 @@ fn perf_loop() {
     };
     println!("{f} {n} {sum}");
 }
+

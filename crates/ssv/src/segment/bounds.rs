@@ -43,19 +43,11 @@ pub(super) fn sphere_excludes(s: &BoundingSphere, t: &BoundingSphere, best: f64)
     reach <= 0.0 || (t.center - s.center).norm_squared() >= reach * reach
 }
 
-/// The interval that bounds nothing (placeholder of columns not computed yet).
-#[inline(always)]
-fn unbounded() -> LocalInterval {
-    UNBOUNDED_REF.0
-}
-
 /// The SSVs of B in A's box frame (their intervals and squared gaps to A's box), computed
 /// on first use: only columns that meet a pair surviving the sphere bound are transformed.
 pub(super) struct Columns {
-    interval: [LocalInterval; MAX_COLUMNS],
-    bound_sq: [f64; MAX_COLUMNS],
-    /// Bit j set when column j is computed.
-    done: u32,
+    /// Column j's interval and squared gap once computed.
+    col: [Option<(LocalInterval, f64)>; MAX_COLUMNS],
 }
 
 impl Columns {
@@ -63,9 +55,7 @@ impl Columns {
     #[inline(always)]
     pub fn new() -> Self {
         Self {
-            interval: [unbounded(); MAX_COLUMNS],
-            bound_sq: [0.0; MAX_COLUMNS],
-            done: 0,
+            col: [None; MAX_COLUMNS],
         }
     }
 
@@ -73,21 +63,21 @@ impl Columns {
     /// and 0 beyond [`MAX_COLUMNS`]).
     #[inline(always)]
     pub fn get(&mut self, a: &Segment, b: &Segment, j: usize) -> (&LocalInterval, f64) {
-        if j >= MAX_COLUMNS {
-            return (&UNBOUNDED_REF.0, 0.0);
+        match self.col.get_mut(j) {
+            Some(slot) => {
+                let (iv, sq) = slot.get_or_insert_with(|| {
+                    let box_a = a.world_obb();
+                    let iv = box_a.local_interval(&b.world_ssvs()[j]);
+                    (iv, iv.distance_squared(&box_a.own_interval()))
+                });
+                (iv, *sq)
+            }
+            None => (&UNBOUNDED_REF.0, 0.0),
         }
-        if self.done & (1 << j) == 0 {
-            let box_a = a.world_obb();
-            let iv = box_a.local_interval(&b.world_ssvs()[j]);
-            self.bound_sq[j] = iv.distance_squared(&box_a.own_interval());
-            self.interval[j] = iv;
-            self.done |= 1 << j;
-        }
-        (&self.interval[j], self.bound_sq[j])
     }
 }
 
-/// Holder of the unbounded interval for untracked columns.
+/// Holder of the interval that bounds nothing (columns beyond [`MAX_COLUMNS`]).
 struct Unbounded(LocalInterval);
 /// The unbounded interval (a `static` cannot call `Vector3::repeat`, so it is spelled out).
 static UNBOUNDED_REF: Unbounded = Unbounded(LocalInterval {

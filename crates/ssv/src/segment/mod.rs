@@ -130,7 +130,7 @@ impl Segment {
     pub fn set_pose(&mut self, pose: &Isometry3<f64>) {
         let m = RigidMatrix::new(pose);
         for (w, s) in self.world_ssvs.iter_mut().zip(&self.ssvs) {
-            *w = s.transformed_by(&m.rot, &m.t);
+            w.set_transformed_by(s, &m.rot, &m.t);
         }
         for (w, s) in self.world_spheres.iter_mut().zip(&self.spheres) {
             w.center = m.point(&s.center);
