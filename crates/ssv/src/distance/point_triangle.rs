@@ -53,7 +53,7 @@ fn voronoi_params(p: &Point3<f64>, t: &Tss) -> Option<(f64, f64)> {
     let (aa, cc, x) = (ab.norm_squared(), ac.norm_squared(), ab.dot(&ac));
     let area4 = aa * cc - x * x;
     let lmax = aa.max(cc).max(aa + cc - 2.0 * x);
-    if !(area4 > WELL_SHAPED * lmax * lmax) {
+    if area4 <= WELL_SHAPED * lmax * lmax {
         return None;
     }
     let (d1, d2) = (ab.dot(&ap), ac.dot(&ap));
