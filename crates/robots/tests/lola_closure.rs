@@ -92,7 +92,7 @@ fn loops_stay_closed_along_a_trajectory() {
             (q, v) = rk4(m, &mut data, &q, &v, 1e-3);
             if step % 20 == 19 {
                 update_placements(m, &mut data, &q).unwrap();
-                let worst = closure_error(m, &data);
+                worst = worst.max(closure_error(m, &data));
             }
         }
         let moved = lm
