@@ -5,11 +5,13 @@
 //!   of A (transformed per query) and of SSV `j` of B (constant, precomputed) are separated
 //!   by per-axis gaps `g_k`, and `d(i, j) >= sqrt(sum g_k^2)`. The same against B's whole
 //!   box bounds a whole row `i`. Symmetrically, B's SSVs in A's box frame bound whole
-//!   columns `j` and, against A's precomputed intervals, each pair a second time; the larger
-//!   of the two pair bounds is used;
+//!   columns `j` and, against A's precomputed intervals, each pair a second time (columns
+//!   are transformed only when first needed);
 //! * bounding spheres: `d(i, j) >= |c_i - c_j| - R_i - R_j` (signed, valid when overlapping);
-//! * an axis n (the normal of the first evaluated pair, else the box-centre direction): `d(i, j) >= min_{x in j} x . n -
-//!   max_{x in i} x . n` (signed as well: |q - p| >= (q - p) . n for any unit n).
+//! * a separating axis n (the normal of the first evaluated pair, else the direction between
+//!   the box centres): `d(i, j) >= min_{x in j} x . n - max_{x in i} x . n`, radii included
+//!   (signed as well, since |q - p| >= (q - p) . n for any unit n). With the warm-start
+//!   pair's normal this one subtraction per pair rejects most pairs.
 //!
 //! Interval bounds are non-negative, so they only prune while they are positive (a zero
 //! bound says nothing about how deep two volumes interpenetrate).
@@ -103,7 +105,7 @@ pub(super) fn box_axis(a: &Segment, b: &Segment) -> Option<Vector3<f64>> {
     }
 }
 
-/// `max x . n` over an SSV (radius included); -inf without an axis (bounds nothing).
+/// `max x . n` over an SSV (radius included); +inf without an axis (bounds nothing).
 #[inline(always)]
 pub(super) fn axis_max(s: &Ssv, n: Option<&Vector3<f64>>) -> f64 {
     match n {
@@ -115,12 +117,12 @@ pub(super) fn axis_max(s: &Ssv, n: Option<&Vector3<f64>>) -> f64 {
                 .fold(f64::NEG_INFINITY, f64::max);
             m + s.radius()
         }
-        None => f64::NEG_INFINITY,
+        None => f64::INFINITY,
     }
 }
 
 /// `min x . n` over each SSV of B (radius included), for the first [`MAX_COLUMNS`] SSVs;
-/// +inf without an axis... so that differences with [`axis_max`] never exclude.
+/// -inf without an axis or beyond them, so that differences with [`axis_max`] never exclude.
 pub(super) struct AxisSupport {
     lo: [f64; MAX_COLUMNS],
     min: f64,

@@ -1,5 +1,7 @@
 //! Segment-pair distance query with the enlarged-OBB pre-check (6.7) and exact pruning of
-//! SSV pairs by cheap lower bounds (see `bounds.rs`).
+//! SSV pairs by cheap lower bounds (see `bounds.rs`). The collision model warm-starts each
+//! query with the previous update's closest SSV pair (temporal coherence): it sets a tight
+//! best distance and the separating axis before any other pair is looked at.
 
 use super::bounds::{self, Columns};
 use super::Segment;
