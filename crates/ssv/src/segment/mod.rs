@@ -129,11 +129,16 @@ impl Segment {
     /// in place, without allocating.
     pub fn set_pose(&mut self, pose: &Isometry3<f64>) {
         let m = RigidMatrix::new(pose);
-        for (w, s) in self.world_ssvs.iter_mut().zip(&self.ssvs) {
+        let ssvs = self.world_ssvs.iter_mut().zip(&self.ssvs);
+        for ((w, s), sphere) in ssvs.zip(self.world_spheres.iter_mut().zip(&self.spheres)) {
             w.set_transformed_by(s, &m.rot, &m.t);
-        }
-        for (w, s) in self.world_spheres.iter_mut().zip(&self.spheres) {
-            w.center = m.point(&s.center);
+            // The sphere centre of a point or segment follows from the moved vertices
+            // (BoundingSphere::of_ssv); a triangle's centre is moved itself.
+            sphere.0.center = match w {
+                Ssv::Point(p) => *p.center(),
+                Ssv::Line(l) => nalgebra::center(&l.vertices()[0], &l.vertices()[1]),
+                Ssv::Triangle(_) => m.point(&sphere.1.center),
+            };
         }
         self.world_obb = self.obb.transformed_by(&m.rot, &m.t);
     }
