@@ -5,8 +5,8 @@
 //! Forward dynamics by the O(n) three-pass algorithm ([`dynamics::on`], Algorithms 2.1-2.4),
 //! CRBA + dense Cholesky, or CRBA + reverse sparse `L^T L`; inverse dynamics by RNEA.
 
-mod check;
 pub mod centroidal;
+mod check;
 pub mod configuration;
 pub mod data;
 pub mod dynamics;

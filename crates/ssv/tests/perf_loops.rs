@@ -89,4 +89,3 @@ fn perf_loop() {
     };
     println!("{f} {n} {sum}");
 }
-
