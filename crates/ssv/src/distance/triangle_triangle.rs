@@ -7,14 +7,17 @@
 //! triangles always have an edge piercing the other one, and overlapping coplanar triangles
 //! have crossing edges or a vertex inside the other face. The piercing test only runs when
 //! each triangle straddles the other's plane (necessary for a non-coplanar intersection);
-//! the edge pairs are solved in structure-of-arrays form ([`super::edge_pairs`]) and all
-//! selections are branch-free arg-mins. A flat triangle has no face candidates: it is the
-//! union of its edges (its longest edge).
+//! the edge pairs reuse the frames' edge data ([`super::edge_pairs`]) and the selections
+//! are branch-free arg-mins. A flat triangle has no face candidates: it is the union of its
+//! edges (its longest edge).
 //!
 //! Two cheap certificates end the search early (PQP-style): a triangle entirely on one side
 //! of the other's plane whose nearest vertex projects into the other face is at exactly that
-//! height, and an edge pair whose connecting plane (normal to c*) separates the triangles is
-//! the closest pair. Only when neither holds are all candidates compared.
+//! height, and an edge pair whose connecting plane (normal to c*) separates the triangles
+//! (all six vertices tested, with a 1e-12 relative slack) is the closest pair. A short walk
+//! over edge pairs (start at the vertices nearest to the other plane, move towards the
+//! vertex beyond the plane) finds that pair with one to three LL solves in most separated
+//! configurations. Only when no certificate holds are all candidates compared.
 
 use super::assemble::{assemble, clamp01, edge_to_tri, Closest, Geom};
 use super::edge_pairs::{edge_pair, nearest_edge_pair};
