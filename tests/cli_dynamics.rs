@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::{json_lines, run};
+use common::{answers, floats, json_lines, run};
 
 use rand::{Rng, SeedableRng};
 use serde_json::{json, Value};
@@ -14,15 +14,6 @@ fn g1() -> String {
         .join("crates/dynamics/data/g1_29dof_rev_1_0.urdf")
         .display()
         .to_string()
-}
-
-/// A JSON array of numbers.
-fn floats(v: &Value) -> Vec<f64> {
-    v.as_array()
-        .expect("array")
-        .iter()
-        .map(|x| x.as_f64().expect("number"))
-        .collect()
 }
 
 /// `biped model SOURCE --json`.
@@ -122,16 +113,7 @@ fn dynamics(source: &[&str], extra: &[&str], requests: &[Value], key: &str) -> V
         .chain(extra)
         .copied()
         .collect();
-    let input: String = requests.iter().map(|r| format!("{r}\n")).collect();
-    let out = run(&args, &input);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stdout)
-    );
-    let lines = json_lines(&out);
-    assert_eq!(lines.len(), requests.len());
-    lines.iter().map(|l| floats(&l[key])).collect()
+    answers(&args, requests, key)
 }
 
 /// Largest |a - b| relative to max(1, |b|).

@@ -4,18 +4,9 @@
 mod common;
 
 use biped_robots::lola::{self, LolaType};
-use common::{json_lines, run};
+use common::{answers, floats, json_lines, run};
 use rand::{Rng, SeedableRng};
 use serde_json::{json, Value};
-
-/// A JSON array of numbers.
-fn floats(v: &Value) -> Vec<f64> {
-    v.as_array()
-        .expect("array")
-        .iter()
-        .map(|x| x.as_f64().expect("number"))
-        .collect()
-}
 
 /// Largest |a - b| relative to max(1, max |b|).
 fn rel(a: &[f64], b: &[f64]) -> f64 {
@@ -26,20 +17,6 @@ fn rel(a: &[f64], b: &[f64]) -> f64 {
         .map(|(x, y)| (x - y).abs())
         .fold(0.0, f64::max)
         / scale
-}
-
-/// `biped ARGS` with JSON requests on stdin; returns `key` of every answer.
-fn answers(args: &[&str], requests: &[Value], key: &str) -> Vec<Vec<f64>> {
-    let input: String = requests.iter().map(|r| format!("{r}\n")).collect();
-    let out = run(args, &input);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stdout)
-    );
-    let lines = json_lines(&out);
-    assert_eq!(lines.len(), requests.len());
-    lines.iter().map(|l| floats(&l[key])).collect()
 }
 
 #[test]

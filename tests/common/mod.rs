@@ -1,5 +1,8 @@
 //! Helpers shared by the end-to-end CLI tests: run the built `biped` binary, read its output.
 
+// Each test binary uses its own subset of these helpers.
+#![allow(dead_code)]
+
 use serde_json::Value;
 use std::io::Write;
 use std::process::{Command, Output, Stdio};
@@ -30,4 +33,27 @@ pub fn json_lines(out: &Output) -> Vec<Value> {
         .lines()
         .map(|l| serde_json::from_str(l).expect("every output line is JSON"))
         .collect()
+}
+
+/// A JSON array of numbers.
+pub fn floats(v: &Value) -> Vec<f64> {
+    v.as_array()
+        .expect("array")
+        .iter()
+        .map(|x| x.as_f64().expect("number"))
+        .collect()
+}
+
+/// `biped ARGS` with JSON requests on stdin; returns `key` of every answer.
+pub fn answers(args: &[&str], requests: &[Value], key: &str) -> Vec<Vec<f64>> {
+    let input: String = requests.iter().map(|r| format!("{r}\n")).collect();
+    let out = run(args, &input);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    let lines = json_lines(&out);
+    assert_eq!(lines.len(), requests.len());
+    lines.iter().map(|l| floats(&l[key])).collect()
 }
