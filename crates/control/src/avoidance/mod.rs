@@ -1,0 +1,1 @@
+//! Self-collision avoidance from SSV segment distances (thesis ch. 5).

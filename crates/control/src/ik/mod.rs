@@ -1,0 +1,1 @@
+//! Position-based and differential inverse kinematics (thesis 4.2-4.4).

@@ -1,0 +1,1 @@
+//! Vertical angular momentum compensation, reference trajectory and minimisation (thesis ch. 7).

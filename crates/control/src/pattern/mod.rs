@@ -1,0 +1,1 @@
+//! Walking pattern generation: footsteps, CoM (LIPM, ZMP preview), feet and upper body.

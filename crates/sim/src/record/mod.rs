@@ -1,0 +1,1 @@
+//! Time-series recorder of named signals, written as CSV and SVG plots.
