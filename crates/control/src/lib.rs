@@ -7,7 +7,11 @@
 //! - [`pattern`]: walking pattern generation (CoM, feet and upper body trajectories).
 
 pub mod avoidance;
+pub mod error;
 pub mod ik;
 pub mod momentum;
 pub mod pattern;
 pub mod tasks;
+
+pub use error::IkError;
+pub use ik::Weight;

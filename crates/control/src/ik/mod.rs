@@ -1,1 +1,5 @@
 //! Position-based and differential inverse kinematics (thesis 4.2-4.4).
+
+pub mod weight;
+
+pub use weight::Weight;
