@@ -2,16 +2,27 @@
 //!
 //! - [`jacobian`]: `J_L`, `J_Lz`, `L_z` and its rate (7.1)-(7.2), `I_zz^CoG` (7.11).
 //! - [`compensation`]: producing/reducing split and the null-space term (7.3)-(7.9).
+//! - [`reference`]: the cubic per-step reference `L_ref,z` (7.10)-(7.12).
 //! - [`minimisation`]: the weight `W = delta E + J_Lz^T J_Lz` (7.13)-(7.15).
+//! - [`arm_swing`]: the reference method's arm CoG targets from the opposite leg (7.3.1).
+//!
+//! One IK cycle (1 kHz) with compensation: `VerticalMomentum::update(&centroidal)` after the
+//! centroidal computation the CoM task needs anyway, then `Compensation::add_to(J_Lz,
+//! qdot_prev, L_ref,z(t), &mut y)` on the null-space input `y` of Alg. 4.3 (same sign as a
+//! cost gradient). With minimisation instead: `MomentumMinimisation::update(J_Lz, &mut W)`.
 
+pub mod arm_swing;
 pub mod compensation;
 pub mod error;
 pub mod jacobian;
 pub mod minimisation;
+pub mod reference;
 
+pub use arm_swing::{ArmSwing, ArmSwingNominal, ArmTargets, PointTarget};
 pub use compensation::{
     Compensation, CompensationLaw, CompensationTerms, LOLA_ARMS, LOLA_ARM_FLEXION,
 };
 pub use error::MomentumError;
 pub use jacobian::{vertical_inertia, vertical_momentum_rate, LzRate, VerticalMomentum};
 pub use minimisation::MomentumMinimisation;
+pub use reference::MomentumReference;
