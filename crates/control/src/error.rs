@@ -1,5 +1,6 @@
 //! Typed errors of the inverse-kinematics and task modules (thesis 4.2-4.5).
 
+use crate::ik::position::StopReason;
 use thiserror::Error;
 
 /// Errors of the IK solvers, the weight matrix and the task description.
@@ -43,4 +44,12 @@ pub enum IkError {
     /// A named body or joint does not exist in the model.
     #[error("unknown body or joint '{0}'")]
     UnknownName(String),
+    /// Position IK stopped without reaching the target (Table 4.1 criterion other than sigma_2).
+    #[error("target not reached: stopped by {stop:?} with |dx| = {error_norm}")]
+    Unreachable {
+        /// Criterion that stopped the iteration.
+        stop: StopReason,
+        /// Remaining task error norm.
+        error_norm: f64,
+    },
 }

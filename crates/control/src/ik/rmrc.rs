@@ -1,0 +1,209 @@
+//! Resolved motion rate control (4.11)-(4.12) solved the Klein-Huang way (Algorithm 4.3),
+//! with optional damping (damped least squares, 4.4) and per-row softness (task blending).
+//!
+//! Signs, derived from (4.11): minimise `1/2 qd^T W qd + alpha_N grad_H^T qd` subject to
+//! `J qd = xd`. The Lagrange conditions give `qd = W^-1 J^T lambda + z` with
+//! `z = -alpha_N W^-1 grad_H` and `(J W^-1 J^T) lambda = xd - J z`, i.e. (4.12):
+//! `qd = J#_W xd - alpha_N N W^-1 grad_H` with `N = E - J#_W J` (Alg. 4.3 lines 1-5).
+//! Neither `J#`, `N` nor `W^-1` is formed; only the m x m matrix `B` is factorised in place.
+//!
+//! Extensions (both keep the same structure): `damping` adds `lambda_d^2 E` to `B` (the
+//! weighted damped least squares solution `W^-1 J^T (J W^-1 J^T + lambda_d^2 E)^-1 xd`), and
+//! `softness` adds `c_i >= 0` to `B_ii`, the KKT system of the penalty problem
+//! `1/2 qd^T W qd + sum_i (xd_i - J_i qd)^2 / (2 c_i)`. As `c_i -> infinity` row `i` drops out
+//! continuously; this is how tasks are blended in and out (see [`crate::ik::blend`]).
+
+use super::linalg::{check_dim, check_finite, cholesky_in_place, cholesky_solve_in_place};
+use super::weight::Weight;
+use crate::error::IkError;
+use nalgebra::{DMatrix, DVector};
+
+/// One RMRC problem: the first `rows` rows of `jacobian` and `xdot` form `J` and `xd` (4.12).
+#[derive(Debug, Clone, Copy)]
+pub struct RmrcProblem<'a> {
+    /// Task Jacobian buffer (at least `rows` x n).
+    pub jacobian: &'a DMatrix<f64>,
+    /// Number of active task rows m.
+    pub rows: usize,
+    /// Task velocity buffer (at least `rows` entries).
+    pub xdot: &'a DVector<f64>,
+    /// Joint-space weight W (4.7).
+    pub weight: &'a Weight,
+    /// Null-space term: gradient of H (length n) and `alpha_N = beta dt` (4.12).
+    pub null_space: Option<(&'a DVector<f64>, f64)>,
+    /// Damping `lambda_d^2 >= 0` added to `J W^-1 J^T` (damped least squares, section 4.4).
+    pub damping: f64,
+    /// Per-row softness `c_i >= 0` added to `B_ii` (task blending; 0 = hard constraint).
+    pub softness: Option<&'a [f64]>,
+}
+
+impl<'a> RmrcProblem<'a> {
+    /// Hard problem `J qd = xd` with weight `W` and no null-space term (4.9).
+    pub fn new(
+        jacobian: &'a DMatrix<f64>,
+        rows: usize,
+        xdot: &'a DVector<f64>,
+        weight: &'a Weight,
+    ) -> Self {
+        Self {
+            jacobian,
+            rows,
+            xdot,
+            weight,
+            null_space: None,
+            damping: 0.0,
+            softness: None,
+        }
+    }
+}
+
+/// Preallocated Klein-Huang RMRC solver (Algorithm 4.3) for up to `m_max` rows and n DoF.
+#[derive(Debug, Clone)]
+pub struct Rmrc {
+    m_max: usize,
+    n: usize,
+    /// `B = J W^-1 J^T (+ damping)`, then its Cholesky factor (lower triangle).
+    b: DMatrix<f64>,
+    /// Columns `W^-1 J_i^T`.
+    wjt: DMatrix<f64>,
+    row: DVector<f64>,
+    wrow: DVector<f64>,
+    z: DVector<f64>,
+    lambda: DVector<f64>,
+}
+
+impl Rmrc {
+    /// Solver for at most `m_max` task rows and `n` joint velocities.
+    pub fn new(m_max: usize, n: usize) -> Self {
+        Self {
+            m_max,
+            n,
+            b: DMatrix::zeros(m_max, m_max),
+            wjt: DMatrix::zeros(n, m_max),
+            row: DVector::zeros(n),
+            wrow: DVector::zeros(n),
+            z: DVector::zeros(n),
+            lambda: DVector::zeros(m_max),
+        }
+    }
+
+    /// Number of joint velocities n.
+    pub fn nv(&self) -> usize {
+        self.n
+    }
+
+    /// Lagrange multipliers `lambda` of the last solve (first m entries are valid).
+    pub fn multipliers(&self) -> &DVector<f64> {
+        &self.lambda
+    }
+
+    /// `qdot = J#_W xd - alpha_N N W^-1 grad_H` (4.12) by Algorithm 4.3, without allocation.
+    pub fn solve(&mut self, p: &RmrcProblem<'_>, qdot: &mut DVector<f64>) -> Result<(), IkError> {
+        let m = p.rows;
+        self.check(p, qdot)?;
+        match p.null_space {
+            Some((grad, alpha)) => {
+                check_dim("null-space gradient", self.n, grad.len())?;
+                check_finite("alpha_N", &[alpha])?;
+                p.weight.solve_into(grad, &mut self.z)?;
+                self.z *= -alpha;
+            }
+            None => self.z.fill(0.0),
+        }
+        self.assemble(p.jacobian, m, p.weight)?;
+        for i in 0..m {
+            let jz = (0..self.n)
+                .map(|c| p.jacobian[(i, c)] * self.z[c])
+                .sum::<f64>();
+            self.lambda[i] = p.xdot[i] - jz;
+            self.b[(i, i)] += p.damping + p.softness.map_or(0.0, |s| s[i]);
+        }
+        cholesky_in_place(&mut self.b, m)?;
+        cholesky_solve_in_place(&self.b, m, &mut self.lambda);
+        qdot.copy_from(&self.z);
+        for k in 0..m {
+            qdot.axpy(self.lambda[k], &self.wjt.column(k), 1.0);
+        }
+        check_finite("qdot", qdot.as_slice())
+    }
+
+    /// Yoshikawa manipulability `w = sqrt(det(J J^T))` (4.22) of the first `rows` rows, from
+    /// the Cholesky factor (`prod L_ii`); 0 if `J J^T` is numerically singular.
+    pub fn manipulability(&mut self, jacobian: &DMatrix<f64>, rows: usize) -> Result<f64, IkError> {
+        self.check_jacobian(jacobian, rows)?;
+        self.assemble(jacobian, rows, &Weight::Identity)?;
+        match cholesky_in_place(&mut self.b, rows) {
+            Ok(()) => Ok((0..rows).map(|i| self.b[(i, i)]).product()),
+            Err(IkError::NotPositiveDefinite) => Ok(0.0),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// Columns `W^-1 J_i^T` and the lower triangle of `B = J W^-1 J^T`.
+    fn assemble(&mut self, j: &DMatrix<f64>, m: usize, w: &Weight) -> Result<(), IkError> {
+        for i in 0..m {
+            for c in 0..self.n {
+                self.row[c] = j[(i, c)];
+            }
+            w.solve_into(&self.row, &mut self.wrow)?;
+            self.wjt.set_column(i, &self.wrow);
+        }
+        for k in 0..m {
+            let col = self.wjt.column(k);
+            for i in k..m {
+                let mut s = 0.0;
+                for c in 0..self.n {
+                    s += j[(i, c)] * col[c];
+                }
+                self.b[(i, k)] = s;
+            }
+        }
+        Ok(())
+    }
+
+    /// Validates the shapes of a problem and the output.
+    fn check(&self, p: &RmrcProblem<'_>, qdot: &DVector<f64>) -> Result<(), IkError> {
+        self.check_jacobian(p.jacobian, p.rows)?;
+        if p.xdot.len() < p.rows {
+            return Err(IkError::Dimension {
+                what: "xdot",
+                expected: p.rows,
+                got: p.xdot.len(),
+            });
+        }
+        check_dim("qdot", self.n, qdot.len())?;
+        check_finite("xdot", &p.xdot.as_slice()[..p.rows])?;
+        if !(p.damping >= 0.0 && p.damping.is_finite()) {
+            return Err(IkError::InvalidParameter {
+                name: "damping",
+                reason: "must be >= 0",
+            });
+        }
+        if let Some(s) = p.softness {
+            if s.len() < p.rows || s[..p.rows].iter().any(|c| !(*c >= 0.0 && c.is_finite())) {
+                return Err(IkError::InvalidParameter {
+                    name: "softness",
+                    reason: "needs rows entries, each finite and >= 0",
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Validates a Jacobian buffer for `rows` active rows.
+    fn check_jacobian(&self, j: &DMatrix<f64>, rows: usize) -> Result<(), IkError> {
+        check_dim("Jacobian columns", self.n, j.ncols())?;
+        if rows > self.m_max || rows > j.nrows() {
+            return Err(IkError::Dimension {
+                what: "task rows (capacity)",
+                expected: self.m_max.min(j.nrows()),
+                got: rows,
+            });
+        }
+        let nr = j.nrows();
+        for c in 0..self.n {
+            check_finite("Jacobian", &j.as_slice()[c * nr..c * nr + rows])?;
+        }
+        Ok(())
+    }
+}
