@@ -1,6 +1,28 @@
-//! First-order systems `zdot = f(t, z)` (2.2)-(2.4) and the integrators that advance them.
+//! First-order systems `zdot = f(t, z)` (2.2)-(2.4) and the integrators that advance them
+//! (thesis 2.1; issue 5 points 2 and 6).
 //!
 //! Integrators are generic over [`OdeSystem`]; nothing here knows about robots.
+//!
+//! - [`Integrator`]: explicit Euler, semi-implicit (symplectic) Euler, classic RK4 and
+//!   adaptive Dormand-Prince 5(4) with dense output, selected by [`Method`] and configured by
+//!   [`Settings`]. One call integrates one control period `[t0, t1]` and never steps past
+//!   `t1` (the input is piecewise constant). No heap allocation happens inside a call.
+//! - Symplectic Euler needs the position/rate split of [`SplitSystem`]. Rust has no
+//!   specialisation, so the split cannot be detected from an `OdeSystem` bound; the
+//!   `advance_split*` entry points take a [`SplitSystem`] and serve all four methods, the
+//!   plain `advance*` entry points take any [`OdeSystem`] and reject only symplectic Euler.
+
+mod dopri5;
+mod error;
+mod fixed;
+mod integrator;
+mod settings;
+mod work;
+
+pub use dopri5::{Tableau, TABLEAU};
+pub use error::{ConfigError, IntegrateError, Quantity};
+pub use integrator::Integrator;
+pub use settings::{Method, ParseMethodError, Settings, StepStats};
 
 /// A first-order ODE `zdot = f(t, z)` with a state of fixed dimension (2.2).
 pub trait OdeSystem {

@@ -1,0 +1,297 @@
+//! Adaptive Dormand-Prince 5(4) with embedded error control, a PI step-size controller and the
+//! free fourth-order continuous extension for dense output (thesis 2.1, integration of (2.2)).
+//!
+//! Tableau: Dormand & Prince (1980), FSAL (the last stage is `f` at the new state). The error
+//! of a step is the RMS norm of `h * sum (b_i - bhat_i) k_i` scaled by
+//! `atol + rtol * max(|y0_i|, |y1_i|)`; a step is accepted when that norm is `<= 1`. The new
+//! step is `h * clamp(safety * err^-(1/5 - 0.75 beta) * err_prev^beta, fac_min, fac_max)`,
+//! never growing right after a rejection. The last step of a call is clipped to end exactly at
+//! `t1`; the unclipped step-size estimate is kept for the next call. The first stage is
+//! re-evaluated at the start of every call (the input may have changed) and whenever
+//! `project` changed the accepted state, otherwise it is reused (FSAL). Dense output values
+//! come from the interpolant of the unprojected step, before `project` is applied.
+
+use super::error::{IntegrateError, Quantity};
+use super::settings::{Settings, StepStats};
+use super::work::{eval, finite, project, Outputs, Work};
+use super::OdeSystem;
+
+/// Nodes `c_2..c_7`.
+const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
+
+/// Lower-triangular coefficients `a_ij` (row `i` = stage `i + 1`).
+const A: [[f64; 6]; 7] = [
+    [0.0; 6],
+    [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
+    [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0],
+    [
+        19372.0 / 6561.0,
+        -25360.0 / 2187.0,
+        64448.0 / 6561.0,
+        -212.0 / 729.0,
+        0.0,
+        0.0,
+    ],
+    [
+        9017.0 / 3168.0,
+        -355.0 / 33.0,
+        46732.0 / 5247.0,
+        49.0 / 176.0,
+        -5103.0 / 18656.0,
+        0.0,
+    ],
+    B6,
+];
+
+/// Fifth-order weights (equal to the last row of `A`, FSAL; `b_7 = 0`).
+const B6: [f64; 6] = [
+    35.0 / 384.0,
+    0.0,
+    500.0 / 1113.0,
+    125.0 / 192.0,
+    -2187.0 / 6784.0,
+    11.0 / 84.0,
+];
+
+/// Fifth-order weights of all seven stages.
+pub(crate) const B: [f64; 7] = [B6[0], B6[1], B6[2], B6[3], B6[4], B6[5], 0.0];
+
+/// Embedded fourth-order weights.
+pub(crate) const BHAT: [f64; 7] = [
+    5179.0 / 57600.0,
+    0.0,
+    7571.0 / 16695.0,
+    393.0 / 640.0,
+    -92097.0 / 339200.0,
+    187.0 / 2100.0,
+    1.0 / 40.0,
+];
+
+/// Coefficients `d_i` of the fourth-order continuous extension (Hairer, Norsett & Wanner).
+pub(crate) const D: [f64; 7] = [
+    -12715105075.0 / 11282082432.0,
+    0.0,
+    87487479700.0 / 32700410799.0,
+    -10690763975.0 / 1880347072.0,
+    701980252875.0 / 199316789632.0,
+    -1453857185.0 / 822651844.0,
+    69997945.0 / 29380423.0,
+];
+
+/// The Dormand-Prince tableau, exposed for order-condition tests.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tableau {
+    /// Nodes `c_i`.
+    pub c: [f64; 7],
+    /// Coefficients `a_ij`, row `i` for stage `i`.
+    pub a: [[f64; 6]; 7],
+    /// Fifth-order weights.
+    pub b: [f64; 7],
+    /// Embedded fourth-order weights.
+    pub bhat: [f64; 7],
+    /// Dense-output coefficients `d_i`.
+    pub d: [f64; 7],
+}
+
+/// The Dormand-Prince 5(4) tableau used by the integrator.
+pub const TABLEAU: Tableau = Tableau {
+    c: C,
+    a: A,
+    b: B,
+    bhat: BHAT,
+    d: D,
+};
+
+/// Step-size memory of Dopri5 carried between calls.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Memory {
+    /// Proposed next step (0 = choose automatically).
+    pub h: f64,
+    /// Previous accepted error norm (for the PI controller).
+    pub err_prev: f64,
+}
+
+/// Advances `z` from `t0` to `t1 > t0` adaptively.
+pub(crate) fn advance<S: OdeSystem, F: FnMut(f64, &[f64])>(
+    s: &Settings,
+    mem: &mut Memory,
+    w: &mut Work,
+    sys: &mut S,
+    (t0, t1): (f64, f64),
+    z: &mut [f64],
+    out: &mut Outputs<'_, F>,
+) -> Result<StepStats, IntegrateError<S::Error>> {
+    let mut st = StepStats::default();
+    eval(sys, t0, z, &mut w.k[0], &mut st)?;
+    if mem.h <= 0.0 {
+        mem.h = if s.h_init > 0.0 {
+            s.h_init
+        } else {
+            initial_step(s, w, sys, t0, z, &mut st)?
+        };
+        mem.err_prev = 1e-4;
+    }
+    let mut t = t0;
+    let mut rejected_last = false;
+    while t < t1 {
+        if st.steps + st.rejected >= s.max_steps {
+            return Err(IntegrateError::TooManySteps {
+                max_steps: s.max_steps,
+                t,
+            });
+        }
+        let h_prop = mem.h.min(s.h_max);
+        let clipped = t + h_prop >= t1;
+        let h = if clipped { t1 - t } else { h_prop };
+        if h_prop < s.h_min || t + h == t {
+            return Err(IntegrateError::StepSizeUnderflow { t, h: h_prop });
+        }
+        let err = try_step(w, sys, s, t, h, z, &mut st)?;
+        if err <= 1.0 {
+            let t_new = if clipped { t1 } else { t + h };
+            emit(w, t, h, t_new, z, out);
+            z.copy_from_slice(&w.next);
+            if project(sys, z, &w.next) {
+                eval(sys, t_new, z, &mut w.k[0], &mut st)?;
+            } else {
+                w.k.swap(0, 6);
+            }
+            let fac = controller(s, err, mem.err_prev, rejected_last);
+            let h_new = (h * fac).min(s.h_max);
+            mem.h = if clipped && h_new >= h {
+                h_new.max(h_prop)
+            } else {
+                h_new
+            };
+            mem.err_prev = err.max(1e-4);
+            st.steps += 1;
+            t = t_new;
+            rejected_last = false;
+        } else {
+            mem.h = h * (s.safety * err.powf(-0.2)).clamp(s.fac_min, 1.0);
+            st.rejected += 1;
+            rejected_last = true;
+        }
+    }
+    Ok(st)
+}
+
+/// Step-size ratio after an accepted step with error norm `err`.
+fn controller(s: &Settings, err: f64, err_prev: f64, rejected_last: bool) -> f64 {
+    let fac = if err == 0.0 {
+        s.fac_max
+    } else {
+        s.safety * err.powf(-(0.2 - 0.75 * s.beta)) * err_prev.powf(s.beta)
+    };
+    let hi = if rejected_last { 1.0 } else { s.fac_max };
+    fac.clamp(s.fac_min, hi)
+}
+
+/// One trial step from `(t, z)` with `k[0] = f(t, z)`: fills `k[1..7]`, `next`, returns the
+/// scaled error norm.
+fn try_step<S: OdeSystem>(
+    w: &mut Work,
+    sys: &mut S,
+    s: &Settings,
+    t: f64,
+    h: f64,
+    z: &[f64],
+    st: &mut StepStats,
+) -> Result<f64, IntegrateError<S::Error>> {
+    for i in 1..7 {
+        let (done, rest) = w.k.split_at_mut(i);
+        let y = if i == 6 { &mut w.next } else { &mut w.stage };
+        for (j, yj) in y.iter_mut().enumerate() {
+            let incr: f64 = (0..i).map(|l| A[i][l] * done[l][j]).sum();
+            *yj = z[j] + h * incr;
+        }
+        eval(sys, t + C[i] * h, y, &mut rest[0], st)?;
+    }
+    finite(&w.next, t + h, Quantity::State)?;
+    let n = z.len();
+    if n == 0 {
+        return Ok(0.0);
+    }
+    let mut sum = 0.0;
+    for (j, (y0, y1)) in z.iter().zip(&w.next).enumerate() {
+        let e: f64 = (0..7).map(|l| (B[l] - BHAT[l]) * w.k[l][j]).sum::<f64>() * h;
+        let sc = s.atol + s.rtol * y0.abs().max(y1.abs());
+        sum += (e / sc) * (e / sc);
+    }
+    let err = (sum / n as f64).sqrt();
+    if err.is_nan() {
+        return Err(IntegrateError::NonFinite {
+            t,
+            what: Quantity::ErrorEstimate,
+        });
+    }
+    Ok(err)
+}
+
+/// Sends the interpolated state at every pending output time in `(t, t_new]` to the sink.
+fn emit<F: FnMut(f64, &[f64])>(
+    w: &mut Work,
+    t: f64,
+    h: f64,
+    t_new: f64,
+    z: &[f64],
+    out: &mut Outputs<'_, F>,
+) {
+    while let Some(to) = out.due(t_new) {
+        let theta = ((to - t) / h).clamp(0.0, 1.0);
+        interpolate(w, h, theta, z);
+        (out.sink)(to, &w.out);
+        out.next += 1;
+    }
+}
+
+/// Continuous extension at `t + theta h` into `w.out`, from `y0 = z`, `y1 = w.next` and the
+/// stages (`k[6] = f(t + h, y1)`).
+fn interpolate(w: &mut Work, h: f64, theta: f64, z: &[f64]) {
+    let th1 = 1.0 - theta;
+    for (j, o) in w.out.iter_mut().enumerate() {
+        let r2 = w.next[j] - z[j];
+        let r3 = h * w.k[0][j] - r2;
+        let r4 = r2 - h * w.k[6][j] - r3;
+        let r5 = h * (0..7).map(|l| D[l] * w.k[l][j]).sum::<f64>();
+        *o = z[j] + theta * (r2 + th1 * (r3 + theta * (r4 + th1 * r5)));
+    }
+}
+
+/// Automatic initial step (Hairer, Norsett & Wanner, II.4): uses `k[0] = f(t0, z)` and one
+/// more evaluation.
+fn initial_step<S: OdeSystem>(
+    s: &Settings,
+    w: &mut Work,
+    sys: &mut S,
+    t0: f64,
+    z: &[f64],
+    st: &mut StepStats,
+) -> Result<f64, IntegrateError<S::Error>> {
+    let n = z.len().max(1) as f64;
+    let sc = |j: usize| s.atol + s.rtol * z[j].abs();
+    let rms =
+        |f: &dyn Fn(usize) -> f64| ((0..z.len()).map(|j| f(j) * f(j)).sum::<f64>() / n).sqrt();
+    let d0 = rms(&|j| z[j] / sc(j));
+    let d1 = rms(&|j| w.k[0][j] / sc(j));
+    let h0 = if d0 < 1e-5 || d1 < 1e-5 {
+        1e-6
+    } else {
+        0.01 * d0 / d1
+    };
+    let h0 = h0.min(s.h_max);
+    for ((y, zj), kj) in w.stage.iter_mut().zip(z).zip(&w.k[0]) {
+        *y = zj + h0 * kj;
+    }
+    let (k0, rest) = w.k.split_at_mut(1);
+    eval(sys, t0 + h0, &w.stage, &mut rest[0], st)?;
+    let d2 = rms(&|j| (rest[0][j] - k0[0][j]) / sc(j)) / h0;
+    let dm = d1.max(d2);
+    let h1 = if dm <= 1e-15 {
+        (h0 * 1e-3).max(1e-6)
+    } else {
+        (0.01 / dm).powf(0.2)
+    };
+    Ok((100.0 * h0).min(h1).min(s.h_max).max(s.h_min))
+}
