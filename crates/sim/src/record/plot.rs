@@ -1,0 +1,129 @@
+//! SVG line plots of recorded signals over time (plotters, SVG backend).
+
+use super::{RecordError, Recorder};
+use plotters::prelude::*;
+use std::path::Path;
+
+/// Line colours, cycled over the plotted signals.
+const PALETTE: [RGBColor; 8] = [
+    RGBColor(31, 119, 180),
+    RGBColor(255, 127, 14),
+    RGBColor(44, 160, 44),
+    RGBColor(214, 39, 40),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(23, 190, 207),
+];
+
+impl Recorder {
+    /// Plots columns `signals` (scalar names or `q[i]`) over time into an SVG file at `path`
+    /// with `title`, x label `time [s]`, y label `y_label`, one line and legend entry each;
+    /// NaN samples break the line.
+    pub fn plot_svg(
+        &self,
+        path: &Path,
+        title: &str,
+        signals: &[&str],
+        y_label: &str,
+    ) -> Result<(), RecordError> {
+        if self.is_empty() {
+            return Err(RecordError::Empty);
+        }
+        if signals.is_empty() {
+            return Err(RecordError::NoSignals);
+        }
+        let cols = signals
+            .iter()
+            .map(|s| self.column(s))
+            .collect::<Result<Vec<_>, _>>()?;
+        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+            let io = |source| RecordError::Io {
+                path: path.to_path_buf(),
+                source,
+            };
+            std::fs::create_dir_all(dir).map_err(io)?;
+        }
+        let plot_err = |e: String| RecordError::Plot {
+            path: path.to_path_buf(),
+            message: e,
+        };
+        draw(self.time(), signals, &cols, path, title, y_label).map_err(|e| plot_err(e.to_string()))
+    }
+}
+
+/// Padded finite range of `values`, `(-1, 1)` if there is none.
+fn range<'a>(values: impl Iterator<Item = &'a f64>) -> (f64, f64) {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+            (lo.min(v), hi.max(v))
+        });
+    if lo > hi {
+        return (-1.0, 1.0);
+    }
+    let pad = if hi > lo {
+        0.05 * (hi - lo)
+    } else {
+        0.5 * lo.abs().max(1.0)
+    };
+    (lo - pad, hi + pad)
+}
+
+/// Draws the chart.
+fn draw(
+    time: &[f64],
+    names: &[&str],
+    cols: &[&[f64]],
+    path: &Path,
+    title: &str,
+    y_label: &str,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let (x0, x1) = range(time.iter());
+    let (y0, y1) = range(cols.iter().flat_map(|c| c.iter()));
+    let root = SVGBackend::new(path, (900, 560)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x0..x1, y0..y1)?;
+    chart
+        .configure_mesh()
+        .x_desc("time [s]")
+        .y_desc(y_label)
+        .draw()?;
+    for (i, (name, col)) in names.iter().zip(cols).enumerate() {
+        let color = PALETTE[i % PALETTE.len()];
+        for (k, seg) in segments(time, col).into_iter().enumerate() {
+            let a = chart.draw_series(LineSeries::new(seg, color.stroke_width(2)))?;
+            if k == 0 {
+                a.label(*name)
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], color));
+            }
+        }
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()?;
+    root.present()?;
+    Ok(())
+}
+
+/// Runs of finite `(t, y)` points, split at NaN samples.
+fn segments(time: &[f64], col: &[f64]) -> Vec<Vec<(f64, f64)>> {
+    let mut out = vec![Vec::new()];
+    for (&t, &y) in time.iter().zip(col) {
+        match (y.is_finite(), out.last_mut()) {
+            (true, Some(seg)) => seg.push((t, y)),
+            (false, Some(seg)) if !seg.is_empty() => out.push(Vec::new()),
+            _ => {}
+        }
+    }
+    out.retain(|s| !s.is_empty());
+    out
+}
