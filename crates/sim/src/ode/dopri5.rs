@@ -6,7 +6,8 @@
 //! `atol + rtol * max(|y0_i|, |y1_i|)`; a step is accepted when that norm is `<= 1`. The new
 //! step is `h * clamp(safety * err^-(1/5 - 0.75 beta) * err_prev^beta, fac_min, fac_max)`,
 //! never growing right after a rejection. The last step of a call is clipped to end exactly at
-//! `t1`; the unclipped step-size estimate is kept for the next call. The first stage is
+//! `t1` (a step reaching within 1 % of `t1` is stretched to it, avoiding a tiny rest step from
+//! rounding, so it may exceed `h_max` by up to 1 %); the unclipped step-size estimate is kept for the next call. The first stage is
 //! re-evaluated at the start of every call (the input may have changed) and whenever
 //! `project` changed the accepted state, otherwise it is reused (FSAL). Dense output values
 //! come from the interpolant of the unprojected step, before `project` is applied.
@@ -142,7 +143,7 @@ pub(crate) fn advance<S: OdeSystem, F: FnMut(f64, &[f64])>(
             });
         }
         let h_prop = mem.h.min(s.h_max);
-        let clipped = t + h_prop >= t1;
+        let clipped = t + 1.01 * h_prop >= t1;
         let h = if clipped { t1 - t } else { h_prop };
         if h_prop < s.h_min || t + h == t {
             return Err(IntegrateError::StepSizeUnderflow { t, h: h_prop });
