@@ -1,0 +1,145 @@
+//! Recorder: CSV round trip, vector expansion, NaN back-fill, SVG output and error paths.
+
+use biped_sim::record::{RecordError, Recorder};
+use std::path::PathBuf;
+
+/// Fresh scratch directory for this test binary.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("biped_record_{}_{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+/// Parses CSV text into its header and rows (independent of the writer).
+fn parse(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
+    let mut lines = text.lines();
+    let header = lines
+        .next()
+        .expect("header")
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    let rows = lines
+        .map(|l| {
+            l.split(',')
+                .map(|v| v.parse::<f64>().expect("number"))
+                .collect()
+        })
+        .collect();
+    (header, rows)
+}
+
+/// A recorder with a scalar, a vector and a late signal, values with awkward digits.
+fn sample_recorder() -> Recorder {
+    let mut r = Recorder::with_capacity(8);
+    let q = r.register_vector("q", 3).expect("register");
+    for k in 0..5 {
+        let t = 0.1 * k as f64;
+        r.sample(t).expect("sample");
+        r.set("energy", (t + 1.0 / 3.0).exp() * 1e-7).expect("set");
+        r.set_id(q, &[t.sin(), std::f64::consts::PI * t, -1e300 * t])
+            .expect("set_id");
+        if k >= 3 {
+            r.set("late", 1.0 / 7.0 + t).expect("late");
+        }
+    }
+    r
+}
+
+#[test]
+fn csv_round_trips_bit_exactly() {
+    let r = sample_recorder();
+    let dir = scratch("csv");
+    let path = dir.join("nested/run.csv");
+    r.write_csv(&path).expect("write");
+    let (header, rows) = parse(&std::fs::read_to_string(&path).expect("read"));
+    assert_eq!(header, ["time", "q[0]", "q[1]", "q[2]", "energy", "late"]);
+    assert_eq!(rows.len(), 5);
+    for (i, row) in rows.iter().enumerate() {
+        assert_eq!(row[0].to_bits(), r.time()[i].to_bits());
+        for (c, name) in header[1..].iter().enumerate() {
+            let col = r.column(name).expect("column");
+            let same = row[c + 1].to_bits() == col[i].to_bits()
+                || (row[c + 1].is_nan() && col[i].is_nan());
+            assert!(same, "{name}[{i}]: {} vs {}", row[c + 1], col[i]);
+        }
+    }
+    // The late signal is NaN before its first sample, set afterwards.
+    let late = r.column("late").expect("late");
+    assert!(late[..3].iter().all(|v| v.is_nan()) && late[3..].iter().all(|v| v.is_finite()));
+    assert_eq!(r.signal_columns("q").expect("q").len(), 3);
+    std::fs::remove_dir_all(dir).expect("cleanup");
+}
+
+#[test]
+fn svg_plot_is_written_with_series_names() {
+    let r = sample_recorder();
+    let dir = scratch("svg");
+    let path = dir.join("plot.svg");
+    r.plot_svg(&path, "Test run", &["q[0]", "q[1]", "late"], "value [1]")
+        .expect("plot");
+    let svg = std::fs::read_to_string(&path).expect("read");
+    assert!(
+        svg.starts_with("<svg") || svg.contains("<svg"),
+        "not an SVG"
+    );
+    for s in ["Test run", "q[0]", "q[1]", "late", "time [s]", "value [1]"] {
+        assert!(svg.contains(s), "SVG lacks {s:?}");
+    }
+    assert!(svg.matches("<polyline").count() >= 3, "one line per signal");
+    std::fs::remove_dir_all(dir).expect("cleanup");
+}
+
+#[test]
+fn errors_are_typed() {
+    let mut r = Recorder::new();
+    assert!(matches!(r.set("x", 1.0), Err(RecordError::Empty)));
+    assert!(matches!(
+        r.write_csv(&scratch("e").join("x.csv")),
+        Err(RecordError::Empty)
+    ));
+    r.sample(1.0).expect("sample");
+    assert!(matches!(
+        r.sample(0.5),
+        Err(RecordError::InvalidTime { .. })
+    ));
+    assert!(matches!(
+        r.sample(f64::NAN),
+        Err(RecordError::InvalidTime { .. })
+    ));
+    r.set_vector("v", &[1.0, 2.0]).expect("vector");
+    assert!(matches!(
+        r.set_vector("v", &[1.0]),
+        Err(RecordError::LengthMismatch {
+            expected: 2,
+            got: 1,
+            ..
+        })
+    ));
+    for bad in ["", "a,b", "time", "q\"", "v[0]"] {
+        assert!(
+            matches!(r.set(bad, 1.0), Err(RecordError::InvalidName(_))),
+            "{bad:?}"
+        );
+    }
+    assert!(matches!(
+        r.column("nope"),
+        Err(RecordError::UnknownSignal(_))
+    ));
+    let dir = scratch("err");
+    assert!(matches!(
+        r.plot_svg(&dir.join("p.svg"), "t", &["nope"], "y"),
+        Err(RecordError::UnknownSignal(_))
+    ));
+    assert!(matches!(
+        r.plot_svg(&dir.join("p.svg"), "t", &[], "y"),
+        Err(RecordError::NoSignals)
+    ));
+    // A directory path cannot be created as a file: IO error naming the path.
+    std::fs::create_dir_all(dir.join("d.csv")).expect("mkdir");
+    match r.write_csv(&dir.join("d.csv")) {
+        Err(RecordError::Io { path, .. }) => assert!(path.ends_with("d.csv")),
+        other => panic!("{other:?}"),
+    }
+    std::fs::remove_dir_all(dir).expect("cleanup");
+}
