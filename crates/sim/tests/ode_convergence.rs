@@ -3,7 +3,7 @@
 
 mod ode_support;
 
-use biped_sim::ode::{Integrator, Method, OdeSystem, Settings, StepStats, TABLEAU};
+use biped_sim::ode::{Integrator, Method, OdeSystem, Settings, SplitSystem, StepStats, TABLEAU};
 use ode_support::{slope, Oscillator, Quadrature, Riccati};
 
 /// Settings that make Dopri5 take exactly steps of `h` (huge tolerances, `h_max = h`).
@@ -18,16 +18,13 @@ fn dopri_fixed(h: f64) -> Settings {
 }
 
 /// Integrates `sys` over `[0, t1]` from `z0` with `method` and step `h` in one call.
-fn run<S: OdeSystem>(
+fn run<S: SplitSystem>(
     sys: &mut S,
     method: Method,
     h: f64,
     t1: f64,
     z0: &[f64],
-) -> (Vec<f64>, StepStats)
-where
-    S: biped_sim::ode::SplitSystem,
-{
+) -> (Vec<f64>, StepStats) {
     let settings = if method == Method::Dopri5 {
         dopri_fixed(h)
     } else {
@@ -88,7 +85,7 @@ fn orders_on_a_non_autonomous_nonlinear_ode() {
             self.0.rhs(t, z, zd)
         }
     }
-    impl biped_sim::ode::SplitSystem for R {
+    impl SplitSystem for R {
         fn position_len(&self) -> usize {
             0
         }
