@@ -10,9 +10,11 @@
 //!   (the gear spring-damper is a force the simulation applies). 31 + 16 = 47 DoF (thesis 46).
 
 mod assemble;
+pub mod collision;
 pub mod params;
 mod sparsity;
 
+pub use collision::{lola_collision_model, LolaCollision, LolaCollisionError};
 pub use params::{LolaError, LolaParams};
 pub use sparsity::{mass_matrix_nonzeros, sparsity, Sparsity};
 
