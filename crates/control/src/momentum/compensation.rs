@@ -69,7 +69,11 @@ pub struct CompensationTerms {
 
 impl Compensation {
     /// Reducing set from 1-DoF joint names of `model`, with `law` and gain 1.
-    pub fn new(model: &Model, joints: &[&str], law: CompensationLaw) -> Result<Self, MomentumError> {
+    pub fn new(
+        model: &Model,
+        joints: &[&str],
+        law: CompensationLaw,
+    ) -> Result<Self, MomentumError> {
         let mut is_reducing = vec![false; model.nv()];
         let mut reducing = Vec::with_capacity(joints.len());
         for name in joints {
