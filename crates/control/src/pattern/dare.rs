@@ -1,0 +1,121 @@
+//! Discrete algebraic Riccati equation (DARE) for a single-input system, solved by the
+//! structure-preserving doubling algorithm (quadratic convergence):
+//!
+//! `P = Q + A^T P A - A^T P b (r + b^T P b)^-1 b^T P A`.
+//!
+//! With `G_0 = b r^-1 b^T`, `H_0 = Q`, `A_0 = A` and `W_k = E + G_k H_k`:
+//! `A_{k+1} = A_k W_k^-1 A_k`, `G_{k+1} = G_k + A_k W_k^-1 G_k A_k^T`,
+//! `H_{k+1} = H_k + A_k^T H_k W_k^-1 A_k`; `H_k -> P`. The result is accepted only if the
+//! relative DARE residual is below `1e-9`. The doubling result is polished by Newton-Kleinman
+//! steps (Lyapunov solves) while the residual decreases: at the 1-5 ms periods of a walking
+//! controller the doubling alone leaves relative residuals ~1e-5 (P spans many magnitudes).
+
+use super::PatternError;
+use nalgebra::{DMatrix, DVector, SMatrix, SVector};
+
+/// Stabilising solution of the DARE and how it was obtained.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DareSolution<const N: usize> {
+    /// The solution `P` (symmetric).
+    pub p: SMatrix<f64, N, N>,
+    /// Relative residual `|Q + A^T P A - ... - P| / max(|P|, 1)` (Frobenius norms).
+    pub residual: f64,
+    /// Doublings performed.
+    pub iterations: usize,
+}
+
+/// Relative residual of `p` in the DARE `(a, b, q, r)`.
+pub fn dare_residual<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    b: &SVector<f64, N>,
+    q: &SMatrix<f64, N, N>,
+    r: f64,
+    p: &SMatrix<f64, N, N>,
+) -> f64 {
+    let pb = p * b;
+    let s = r + b.dot(&pb);
+    let bpa = pb.transpose() * a;
+    let rhs = q + a.transpose() * p * a - bpa.transpose() * bpa / s;
+    (rhs - p).norm() / p.norm().max(1.0)
+}
+
+/// Solves the DARE `(a, b, q, r)` by doubling; `q` symmetric positive semi-definite, `r > 0`.
+pub fn solve_dare<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    b: &SVector<f64, N>,
+    q: &SMatrix<f64, N, N>,
+    r: f64,
+) -> Result<DareSolution<N>, PatternError> {
+    const MAX_DOUBLINGS: usize = 80;
+    const NEWTON_STEPS: usize = 8;
+    let eye = SMatrix::<f64, N, N>::identity();
+    let (mut ak, mut gk, mut hk) = (*a, b * b.transpose() / r, *q);
+    let mut iterations = 0;
+    let mut last = f64::INFINITY;
+    while iterations < MAX_DOUBLINGS {
+        iterations += 1;
+        let w_inv = (eye + gk * hk).try_inverse().ok_or(PatternError::Riccati {
+            residual: f64::INFINITY,
+            iterations,
+        })?;
+        let a_next = ak * w_inv * ak;
+        let g_next = gk + ak * w_inv * gk * ak.transpose();
+        let h_next = hk + ak.transpose() * hk * w_inv * ak;
+        let change = (h_next - hk).norm() / h_next.norm().max(1.0);
+        if !change.is_finite() || !a_next.norm().is_finite() || !g_next.norm().is_finite() {
+            break;
+        }
+        (ak, gk, hk) = (a_next, g_next, h_next);
+        last = change;
+        if change < 1e-15 {
+            break;
+        }
+    }
+    let mut p = 0.5 * (hk + hk.transpose());
+    let mut residual = dare_residual(a, b, q, r, &p);
+    for _ in 0..NEWTON_STEPS {
+        let Some(next) = newton_step(a, b, q, r, &p) else {
+            break;
+        };
+        let res = dare_residual(a, b, q, r, &next);
+        if !(res < residual) {
+            break;
+        }
+        (p, residual) = (next, res);
+    }
+    if residual.is_finite() && residual < 1e-9 {
+        Ok(DareSolution {
+            p,
+            residual,
+            iterations,
+        })
+    } else {
+        Err(PatternError::Riccati {
+            residual: if residual.is_finite() { residual } else { last },
+            iterations,
+        })
+    }
+}
+
+/// One Newton-Kleinman step from `p`: with `K = (r + b^T P b)^-1 b^T P A` and
+/// `A_c = A - b K`, solves the Lyapunov equation `P' = A_c^T P' A_c + Q + K^T r K`
+/// (dense Kronecker form; setup-time only).
+fn newton_step<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    b: &SVector<f64, N>,
+    q: &SMatrix<f64, N, N>,
+    r: f64,
+    p: &SMatrix<f64, N, N>,
+) -> Option<SMatrix<f64, N, N>> {
+    let pb = p * b;
+    let k = pb.transpose() * a / (r + b.dot(&pb));
+    let ac = a - b * k;
+    let rhs = q + k.transpose() * k * r;
+    let act = DMatrix::from_column_slice(N, N, ac.transpose().as_slice());
+    let lhs = DMatrix::identity(N * N, N * N) - act.kronecker(&act);
+    let sol = lhs
+        .lu()
+        .solve(&DVector::from_column_slice(rhs.as_slice()))?;
+    let next = SMatrix::<f64, N, N>::from_column_slice(sol.as_slice());
+    Some(0.5 * (next + next.transpose()))
+}
