@@ -4,8 +4,7 @@
 
 use biped_control::ik::{
     jacobian_transpose, AccelerationInput, Activation, ClosedLoopIk, CycleInput, IkSettings,
-    PositionIk, ResolvedAcceleration, Rmrc, RmrcProblem, StopReason, TaskBuffers, TaskMap,
-    Weight,
+    PositionIk, ResolvedAcceleration, Rmrc, RmrcProblem, StopReason, TaskBuffers, TaskMap, Weight,
 };
 use biped_control::IkError;
 use nalgebra::{DMatrix, DVector, Vector2};
@@ -91,7 +90,7 @@ impl TaskMap for Chain {
             Some(a) if a.is_active() => {
                 err[2] = self.target_angle - q.sum();
                 jac.row_mut(2).fill(1.0);
-                self.soft[2] = a.softness(1.0);
+                self.soft[2] = a.softness();
                 Ok(3)
             }
             _ => Ok(2),
@@ -126,8 +125,18 @@ fn newton_raphson_reaches_reachable_target() {
 fn optimisation_with_wolfe_reaches_reachable_target() {
     let mut chain = Chain::new(&[1.0, 0.8, 0.5], [-0.4, 1.5]);
     let mut q = q0(3);
-    let mut ik = PositionIk::new(&chain, IkSettings { delta: 1e-3, ..Default::default() });
-    let r = ik.optimize(&mut chain, &mut q).unwrap().require_reached().unwrap();
+    let mut ik = PositionIk::new(
+        &chain,
+        IkSettings {
+            delta: 1e-3,
+            ..Default::default()
+        },
+    );
+    let r = ik
+        .optimize(&mut chain, &mut q)
+        .unwrap()
+        .require_reached()
+        .unwrap();
     assert!((chain.tip(&q) - chain.target).norm() < 1e-10, "{r:?}");
 }
 
@@ -137,7 +146,13 @@ fn unreachable_target_is_reported_and_optimum_is_closest_point() {
     let far = Vector2::new(3.0, 2.0);
     let mut chain = Chain::new(&[1.0, 0.8, 0.5], [far.x, far.y]);
     let mut q = q0(3);
-    let mut ik = PositionIk::new(&chain, IkSettings { delta: 1e-4, ..Default::default() });
+    let mut ik = PositionIk::new(
+        &chain,
+        IkSettings {
+            delta: 1e-4,
+            ..Default::default()
+        },
+    );
     let rep = ik.optimize(&mut chain, &mut q).unwrap();
     let err = rep.require_reached();
     assert!(matches!(err, Err(IkError::Unreachable { .. })), "{err:?}");
@@ -155,19 +170,36 @@ fn unreachable_target_is_reported_and_optimum_is_closest_point() {
 #[test]
 fn iteration_limit_and_singular_start_are_reported() {
     let mut chain = Chain::new(&[1.0, 0.8, 0.5], [0.9, 1.2]);
-    let mut ik = PositionIk::new(&chain, IkSettings { max_iterations: 1, ..Default::default() });
+    let mut ik = PositionIk::new(
+        &chain,
+        IkSettings {
+            max_iterations: 1,
+            ..Default::default()
+        },
+    );
     let r = ik.newton_raphson(&mut chain, &mut q0(3)).unwrap();
     assert_eq!((r.stop, r.iterations), (StopReason::IterationLimit, 1));
     // Stretched along x: J has rank 1, J J^T is singular.
     let mut chain = Chain::new(&[1.0, 0.8, 0.5], [1.0, 1.0]);
-    let r = ik.newton_raphson(&mut chain, &mut DVector::zeros(3)).unwrap();
+    let r = ik
+        .newton_raphson(&mut chain, &mut DVector::zeros(3))
+        .unwrap();
     assert_eq!(r.stop, StopReason::Singular);
     let nan = DVector::from_element(3, f64::NAN);
-    assert!(matches!(ik.newton_raphson(&mut chain, &mut nan.clone()), Err(IkError::NonFinite(_))));
+    assert!(matches!(
+        ik.newton_raphson(&mut chain, &mut nan.clone()),
+        Err(IkError::NonFinite(_))
+    ));
 }
 
 /// Dense reference of (4.12): `J#_W xd - alpha (E - J#_W J) W^-1 g`.
-fn dense_rmrc(j: &DMatrix<f64>, w: &DMatrix<f64>, xd: &DVector<f64>, g: &DVector<f64>, a: f64) -> DVector<f64> {
+fn dense_rmrc(
+    j: &DMatrix<f64>,
+    w: &DMatrix<f64>,
+    xd: &DVector<f64>,
+    g: &DVector<f64>,
+    a: f64,
+) -> DVector<f64> {
     let wi = w.clone().try_inverse().unwrap();
     let jw = &wi * j.transpose() * (j * &wi * j.transpose()).try_inverse().unwrap();
     let n = DMatrix::identity(j.ncols(), j.ncols()) - &jw * j;
@@ -206,7 +238,8 @@ fn klein_huang_matches_dense_weighted_inverse_and_null_space_is_invisible() {
         // J N = 0: the primary task is tracked exactly despite the gradient.
         assert!((&j * &qd - &xd).norm() < 1e-12);
         let mut qd0 = DVector::zeros(5);
-        rmrc.solve(&RmrcProblem::new(&buf.jac, 2, &xd, w), &mut qd0).unwrap();
+        rmrc.solve(&RmrcProblem::new(&buf.jac, 2, &xd, w), &mut qd0)
+            .unwrap();
         assert!((&j * (&qd - &qd0)).norm() < 1e-12);
         assert!((&qd - &qd0).norm() > 1e-3, "null-space term must act");
     }
@@ -252,13 +285,23 @@ fn closed_loop_tracking_converges_on_a_moving_target() {
         let w = 2.0;
         chain.target = centre + Vector2::new((w * t).cos(), (w * t).sin()) * 0.3;
         chain.velocity = Vector2::new(-(w * t).sin(), (w * t).cos()) * (0.3 * w);
-        let input = CycleInput { gain, weight: &Weight::Identity, null_space: None, damping: 0.0, dt };
+        let input = CycleInput {
+            gain,
+            weight: &Weight::Identity,
+            null_space: None,
+            damping: 0.0,
+            dt,
+        };
         cl.step(&mut chain, &mut q, &input).unwrap();
         errs.push((chain.target - chain.tip(&q)).norm());
     }
     // Start error decays like exp(-K t); with feed-forward the residual is O(dt).
     assert!(errs[0] > 0.1);
-    assert!(errs[200] < errs[0] * (-gain * 0.15f64).exp() + 1e-3, "{}", errs[200]);
+    assert!(
+        errs[200] < errs[0] * (-gain * 0.15f64).exp() + 1e-3,
+        "{}",
+        errs[200]
+    );
     assert!(errs[2999] < 1e-3, "{}", errs[2999]);
 }
 
@@ -287,9 +330,20 @@ fn resolved_acceleration_bias_matches_analytic_and_tracks() {
     let mut rac = ResolvedAcceleration::new(&chain);
     rac.bias(&mut chain, &q, &qd).unwrap();
     let exact = chain.tip_bias(&q, &qd);
-    assert!((rac.jdot_qd.rows(0, 2) - exact).norm() < 1e-7, "{} vs {exact}", rac.jdot_qd);
+    assert!(
+        (rac.jdot_qd.rows(0, 2) - exact).norm() < 1e-7,
+        "{} vs {exact}",
+        rac.jdot_qd
+    );
     let zero = DVector::zeros(3);
-    let input = AccelerationInput { xdot: &zero, xddot: &zero, kp: 100.0, kd: 20.0, weight: &Weight::Identity, dt: 1e-3 };
+    let input = AccelerationInput {
+        xdot: &zero,
+        xddot: &zero,
+        kp: 100.0,
+        kd: 20.0,
+        weight: &Weight::Identity,
+        dt: 1e-3,
+    };
     for _ in 0..3000 {
         rac.step(&mut chain, &mut q, &mut qd, &input).unwrap();
     }
@@ -318,7 +372,13 @@ fn switching_a_task_off_with_ramp_keeps_qdot_continuous() {
             let t = k as f64 * dt;
             chain.target = Vector2::new(0.9 + 0.2 * t.sin(), 1.2);
             chain.velocity = Vector2::new(0.2 * t.cos(), 0.0);
-            let input = CycleInput { gain: 20.0, weight: &Weight::Identity, null_space: Some((&g, 0.5)), damping: 0.0, dt };
+            let input = CycleInput {
+                gain: 20.0,
+                weight: &Weight::Identity,
+                null_space: Some((&g, 0.5)),
+                damping: 0.0,
+                dt,
+            };
             cl.step(&mut chain, &mut q, &input).unwrap();
             if let Some(p) = &prev {
                 if k > 400 {

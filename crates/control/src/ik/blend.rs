@@ -4,15 +4,25 @@
 //!
 //! Switching a task row off abruptly changes `J` and hence `qd` (5.1, "velocity jumps on the
 //! joint level"). Instead each task has an activation `a` in [0, 1] that ramps towards its
-//! target with rate `1/T`; its rows get the softness `c = c0 (1/w - 1)` with the smoothstep
-//! weight `w = 3a^2 - 2a^3` (see [`crate::ik::rmrc`]): `w = 1` is a hard task, `w -> 0` drops
-//! the row continuously (rows with `w = 0` are removed). GIENGER et al. limit the jerk of the
+//! target with rate `1/T`; its rows get the softness (see [`crate::ik::rmrc`])
+//! `c = C_HARD (C_OFF / C_HARD)^(1 - w)` with the smoothstep weight `w = 3a^2 - 2a^3`: `w = 1`
+//! is a hard task (c = 0), `w -> 0` drops the row (rows with `w = 0` are removed). The
+//! log-linear sweep over 16 decades matters: a row's influence changes only while `c` is
+//! within about a decade of its effective stiffness (a Schur complement of `J W^-1 J^T`,
+//! unknown in advance and unit dependent), so a linear law `c ~ 1/w - 1` would concentrate
+//! the whole transition in a few samples; the log sweep spreads it over the ramp. The jumps
+//! at the ends (c = 0 -> C_HARD, C_OFF -> removed) are of relative size 1e-8. GIENGER et al. limit the jerk of the
 //! null-space motion by scaling the null-space velocity; we bound the rate of change of the
 //! null-space input vector `alpha_N grad_H` by scaling its increment
 //! ([`NullSpaceLimiter`]), so a jump in the cost gradient becomes a ramp.
 
 use crate::error::IkError;
 use nalgebra::DVector;
+
+/// Softness of a row at the start of blending out (practically hard).
+pub const C_HARD: f64 = 1e-8;
+/// Softness of a row just before it is removed (practically absent).
+pub const C_OFF: f64 = 1e8;
 
 /// Activation ramp of one task (5.1).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -63,13 +73,14 @@ impl Activation {
         self.weight() > 0.0
     }
 
-    /// Row softness `c0 (1/w - 1)` (0 when fully on; only meaningful if active).
-    pub fn softness(&self, c0: f64) -> f64 {
+    /// Row softness `C_HARD (C_OFF / C_HARD)^(1 - w)` (0 when fully on; only meaningful if
+    /// active).
+    pub fn softness(&self) -> f64 {
         let w = self.weight();
         if w >= 1.0 {
             0.0
         } else {
-            c0 * (1.0 / w - 1.0)
+            C_HARD * (C_OFF / C_HARD).powf(1.0 - w)
         }
     }
 }

@@ -1,0 +1,385 @@
+//! [`LolaTasks`]: stacked task errors and Jacobians of Table 4.2 for the Type 2 model,
+//! evaluated into preallocated buffers (one centroidal pass for the CoG, one Jacobian pass
+//! for all bodies, no allocation per call).
+//!
+//! Rows per task (geometric Jacobians, Appendix C; `R_p` = planning frame, `A_t` = torso):
+//! - foot / arm CoG position: `x = R_p^T (p - c)`, `J = R_p^T (J_p - J_C)`;
+//! - foot orientation: `R_rel = A_t^T A_f`, error `log(R_d R_rel^T)` in torso axes,
+//!   `J = A_t^T (J_w,foot - J_w,torso)` (since `dR_rel/dt = [A_t^T (w_f - w_t)]x R_rel`);
+//! - upper body: error `log(A_d A_t^T)`, `J = J_w,torso`; CoG: `J = J_C`;
+//! - joint tasks: `J = e_i^T`.
+//! The foot TCP is the origin of the `*_sole` marker body; an arm CoG is the CoG of the
+//! subtree of its `*_shoulder` body (links and the rotors mounted in the arm).
+//! Inactive tasks (activation weight 0) are left out of the stack; blended tasks get the
+//! row softness of [`crate::ik::blend`].
+
+use super::targets::{LolaTargets, TaskId};
+use crate::error::IkError;
+use crate::ik::blend::Activation;
+use crate::ik::orientation::orientation_error;
+use crate::ik::TaskMap;
+use biped_dynamics::{Centroidal, Data, JacobianFrame, Jacobians, Model};
+use biped_robots::lola::LolaModel;
+use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Vector3};
+
+/// Names of the joints of the 1-D tasks, in [`TaskId::ALL`] order.
+const JOINTS: [&str; 7] = [
+    "pelvis_rotation",
+    "torso",
+    "r_toe",
+    "l_toe",
+    "head_pan",
+    "head",
+    "camera",
+];
+
+/// Kinematic quantities measured at one configuration.
+#[derive(Debug, Clone, Copy)]
+struct Measured {
+    cog: Vector3<f64>,
+    foot_pos: [Vector3<f64>; 2],
+    foot_rot: [Matrix3<f64>; 2],
+    torso_rot: Matrix3<f64>,
+    arm_cog: [Vector3<f64>; 2],
+}
+
+/// Lola's switchable task set (Table 4.2) over the Type 2 model; implements [`TaskMap`].
+#[derive(Debug, Clone)]
+pub struct LolaTasks {
+    model: Model,
+    data: Data,
+    jac: Jacobians,
+    cen: Centroidal,
+    torso: usize,
+    soles: [usize; 2],
+    arms: [Vec<(usize, Vector3<f64>, f64)>; 2],
+    arm_mass: [f64; 2],
+    joint_q: [usize; 7],
+    joint_v: [usize; 7],
+    /// Task targets `x_d` and feed-forward velocities.
+    pub targets: LolaTargets,
+    /// Activation ramp of every task, in [`TaskId::ALL`] order.
+    pub activation: [Activation; 15],
+    jc: DMatrix<f64>,
+    j3: DMatrix<f64>,
+    jarm: DMatrix<f64>,
+    j6: DMatrix<f64>,
+    j6t: DMatrix<f64>,
+    soft: Vec<f64>,
+    ff: DVector<f64>,
+}
+
+impl LolaTasks {
+    /// Task set for `lola` (Type 2 expected), all tasks on, blend ramps of `ramp_time` seconds.
+    pub fn new(lola: &LolaModel, ramp_time: f64) -> Result<Self, IkError> {
+        let model = lola.model.clone();
+        let id = |n: &str| {
+            model
+                .body_id(n)
+                .ok_or_else(|| IkError::UnknownName(n.to_string()))
+        };
+        let (torso, soles) = (id("torso")?, [id("r_sole")?, id("l_sole")?]);
+        let arms = [
+            arm_bodies(&model, id("r_shoulder")?),
+            arm_bodies(&model, id("l_shoulder")?),
+        ];
+        let arm_mass = [
+            arms[0].iter().map(|a| a.2).sum(),
+            arms[1].iter().map(|a| a.2).sum(),
+        ];
+        let (mut joint_q, mut joint_v) = ([0; 7], [0; 7]);
+        for (k, name) in JOINTS.iter().enumerate() {
+            let l = lola.limits.iter().find(|l| l.name == *name);
+            let l = l.ok_or_else(|| IkError::UnknownName(name.to_string()))?;
+            (joint_q[k], joint_v[k]) = (l.q_index, l.v_index);
+        }
+        let nv = model.nv();
+        Ok(Self {
+            data: Data::new(&model),
+            jac: Jacobians::new(&model),
+            cen: Centroidal::new(&model),
+            torso,
+            soles,
+            arms,
+            arm_mass,
+            joint_q,
+            joint_v,
+            targets: LolaTargets::default(),
+            activation: [Activation::new(true, ramp_time); 15],
+            jc: DMatrix::zeros(3, nv),
+            j3: DMatrix::zeros(3, nv),
+            jarm: DMatrix::zeros(3, nv),
+            j6: DMatrix::zeros(6, nv),
+            j6t: DMatrix::zeros(6, nv),
+            soft: vec![0.0; TaskId::TOTAL_ROWS],
+            ff: DVector::zeros(TaskId::TOTAL_ROWS),
+            model,
+        })
+    }
+
+    /// The multibody model.
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// Requests switching task `id` on or off (ramped by [`Self::advance`]).
+    pub fn switch(&mut self, id: TaskId, on: bool) {
+        self.activation[id.index()].switch(on);
+    }
+
+    /// Switches task `id` on or off immediately (no ramp).
+    pub fn set_active_now(&mut self, id: TaskId, on: bool) {
+        let a = &mut self.activation[id.index()];
+        a.switch(on);
+        a.level = a.target;
+    }
+
+    /// Advances all activation ramps by `dt`.
+    pub fn advance(&mut self, dt: f64) {
+        self.activation.iter_mut().for_each(|a| a.advance(dt));
+    }
+
+    /// Sets every target to its current value at `q` (zero task error), velocities to zero.
+    pub fn set_targets_from(&mut self, q: &DVector<f64>) -> Result<(), IkError> {
+        let m = self.measure(q)?;
+        let rpt = planning_rotation(self.targets.planning_yaw).transpose();
+        let t = &mut self.targets;
+        for s in 0..2 {
+            t.foot_position[s] = rpt * (m.foot_pos[s] - m.cog);
+            t.foot_orientation[s] = m.torso_rot.transpose() * m.foot_rot[s];
+            t.arm_cog[s] = rpt * (m.arm_cog[s] - m.cog);
+        }
+        t.cog = m.cog;
+        t.upper_body = m.torso_rot;
+        for k in 0..7 {
+            t.joints[k] = q[self.joint_q[k]];
+        }
+        t.velocity.fill(0.0);
+        Ok(())
+    }
+
+    /// CoG, foot and torso poses, arm CoGs at `q`; runs the centroidal and Jacobian passes.
+    fn measure(&mut self, q: &DVector<f64>) -> Result<Measured, IkError> {
+        let kin = |e: biped_dynamics::JacobianError| IkError::Kinematics(e.to_string());
+        self.cen
+            .com_jacobian(&self.model, &mut self.data, q, &mut self.jc)
+            .map_err(kin)?;
+        self.jac
+            .compute(&self.model, &mut self.data, q)
+            .map_err(kin)?;
+        let pose = |b: usize| self.data.world_rot[b];
+        let mut arm_cog = [Vector3::zeros(); 2];
+        for s in 0..2 {
+            for &(b, com, mass) in &self.arms[s] {
+                arm_cog[s] += (self.data.world_pos[b] + self.data.world_rot[b] * com) * mass;
+            }
+            arm_cog[s] /= self.arm_mass[s];
+        }
+        Ok(Measured {
+            cog: self.cen.com(),
+            foot_pos: [
+                self.data.world_pos[self.soles[0]],
+                self.data.world_pos[self.soles[1]],
+            ],
+            foot_rot: [pose(self.soles[0]), pose(self.soles[1])],
+            torso_rot: pose(self.torso),
+            arm_cog,
+        })
+    }
+
+    /// Error and Jacobian rows of task `id` at row `r`.
+    fn write_task(
+        &mut self,
+        id: TaskId,
+        m: &Measured,
+        q: &DVector<f64>,
+        r: usize,
+        err: &mut DVector<f64>,
+        out: &mut DMatrix<f64>,
+    ) -> Result<(), IkError> {
+        let kin = |e: biped_dynamics::JacobianError| IkError::Kinematics(e.to_string());
+        let rpt = planning_rotation(self.targets.planning_yaw).transpose();
+        let zero = Vector3::zeros();
+        let e = match id {
+            TaskId::RightFootPosition | TaskId::LeftFootPosition => {
+                let s = (id == TaskId::LeftFootPosition) as usize;
+                self.jac
+                    .point_jacobian(self.soles[s], &zero, &mut self.j3)
+                    .map_err(kin)?;
+                put_rows(out, r, &rpt, &self.j3, 0, Some(&self.jc), 0);
+                self.targets.foot_position[s] - rpt * (m.foot_pos[s] - m.cog)
+            }
+            TaskId::RightFootOrientation | TaskId::LeftFootOrientation => {
+                let s = (id == TaskId::LeftFootOrientation) as usize;
+                let (sole, frame) = (self.soles[s], JacobianFrame::WorldAligned);
+                self.jac
+                    .body_jacobian(sole, frame, &mut self.j6)
+                    .map_err(kin)?;
+                let at = m.torso_rot.transpose();
+                put_rows(out, r, &at, &self.j6, 0, Some(&self.j6t), 0);
+                orientation_error(&self.targets.foot_orientation[s], &(at * m.foot_rot[s]))
+            }
+            TaskId::CoG => {
+                put_rows(out, r, &Matrix3::identity(), &self.jc, 0, None, 0);
+                self.targets.cog - m.cog
+            }
+            TaskId::UpperBodyOrientation => {
+                put_rows(out, r, &Matrix3::identity(), &self.j6t, 0, None, 0);
+                orientation_error(&self.targets.upper_body, &m.torso_rot)
+            }
+            TaskId::RightArmCoG | TaskId::LeftArmCoG => {
+                let s = (id == TaskId::LeftArmCoG) as usize;
+                self.arm_jacobian(s)?;
+                put_rows(out, r, &rpt, &self.jarm, 0, Some(&self.jc), 0);
+                self.targets.arm_cog[s] - rpt * (m.arm_cog[s] - m.cog)
+            }
+            _ => {
+                let k = id.joint_slot().unwrap_or(0);
+                out.row_mut(r).fill(0.0);
+                out[(r, self.joint_v[k])] = 1.0;
+                err[r] = self.targets.joints[k] - q[self.joint_q[k]];
+                return Ok(());
+            }
+        };
+        err.fixed_rows_mut::<3>(r).copy_from(&e);
+        Ok(())
+    }
+
+    /// Arm CoG Jacobian `sum m_b J_p(b, com_b) / m_arm` into `jarm`.
+    fn arm_jacobian(&mut self, s: usize) -> Result<(), IkError> {
+        let kin = |e: biped_dynamics::JacobianError| IkError::Kinematics(e.to_string());
+        self.jarm.fill(0.0);
+        for &(b, com, mass) in &self.arms[s] {
+            self.jac
+                .point_jacobian(b, &com, &mut self.j3)
+                .map_err(kin)?;
+            let f = mass / self.arm_mass[s];
+            for (a, b) in self.jarm.iter_mut().zip(self.j3.iter()) {
+                *a += f * b;
+            }
+        }
+        Ok(())
+    }
+}
+
+impl TaskMap for LolaTasks {
+    fn nq(&self) -> usize {
+        self.model.nq()
+    }
+
+    fn nv(&self) -> usize {
+        self.model.nv()
+    }
+
+    fn max_rows(&self) -> usize {
+        TaskId::TOTAL_ROWS
+    }
+
+    /// Stacks the active tasks in [`TaskId::ALL`] order (Table 4.2).
+    fn error_and_jacobian(
+        &mut self,
+        q: &DVector<f64>,
+        err: &mut DVector<f64>,
+        jac: &mut DMatrix<f64>,
+    ) -> Result<usize, IkError> {
+        let (rows, nv) = (TaskId::TOTAL_ROWS, self.model.nv());
+        if err.len() < rows || jac.nrows() < rows || jac.ncols() != nv {
+            return Err(IkError::Dimension {
+                what: "task buffers (rows)",
+                expected: rows,
+                got: err.len().min(jac.nrows()),
+            });
+        }
+        let m = self.measure(q)?;
+        let kin = |e: biped_dynamics::JacobianError| IkError::Kinematics(e.to_string());
+        self.jac
+            .body_jacobian(self.torso, JacobianFrame::WorldAligned, &mut self.j6t)
+            .map_err(kin)?;
+        let mut r = 0;
+        for id in TaskId::ALL {
+            let a = self.activation[id.index()];
+            if !a.is_active() {
+                continue;
+            }
+            self.write_task(id, &m, q, r, err, jac)?;
+            let (d, off) = (id.dim(), id.full_offset());
+            for i in 0..d {
+                self.soft[r + i] = a.softness();
+                self.ff[r + i] = self.targets.velocity[off + i];
+            }
+            r += d;
+        }
+        Ok(r)
+    }
+
+    fn feedforward(&self, out: &mut DVector<f64>) {
+        out.copy_from(&self.ff);
+    }
+
+    fn softness(&self) -> Option<&[f64]> {
+        Some(&self.soft)
+    }
+
+    /// `q (+) v step` with the quaternion base integrated on SE(3) (allocates one vector).
+    fn retract(
+        &self,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        step: f64,
+        out: &mut DVector<f64>,
+    ) -> Result<(), IkError> {
+        let next = biped_dynamics::integrate(&self.model, q, v, step)
+            .map_err(|e| IkError::Kinematics(e.to_string()))?;
+        crate::ik::linalg::check_dim("retract output", next.len(), out.len())?;
+        out.copy_from(&next);
+        Ok(())
+    }
+}
+
+/// Rotation of the planning frame: yaw about the inertial vertical.
+fn planning_rotation(yaw: f64) -> Matrix3<f64> {
+    Rotation3::from_axis_angle(&Vector3::z_axis(), yaw).into_inner()
+}
+
+/// `out[r..r+3, :] = rot * (a[ra..ra+3, :] - b[rb..rb+3, :])` (b optional).
+fn put_rows(
+    out: &mut DMatrix<f64>,
+    r: usize,
+    rot: &Matrix3<f64>,
+    a: &DMatrix<f64>,
+    ra: usize,
+    b: Option<&DMatrix<f64>>,
+    rb: usize,
+) {
+    for c in 0..a.ncols() {
+        let mut v = Vector3::new(a[(ra, c)], a[(ra + 1, c)], a[(ra + 2, c)]);
+        if let Some(b) = b {
+            v -= Vector3::new(b[(rb, c)], b[(rb + 1, c)], b[(rb + 2, c)]);
+        }
+        let w = rot * v;
+        for i in 0..3 {
+            out[(r + i, c)] = w[i];
+        }
+    }
+}
+
+/// Bodies of the subtree of `root` with their CoM (body frame) and mass (massless skipped).
+fn arm_bodies(model: &Model, root: usize) -> Vec<(usize, Vector3<f64>, f64)> {
+    let in_subtree = |mut b: usize| loop {
+        if b == root {
+            return true;
+        }
+        match model.bodies()[b].parent() {
+            Some(p) => b = p,
+            None => return false,
+        }
+    };
+    (0..model.nbodies())
+        .filter(|&b| in_subtree(b))
+        .map(|b| {
+            let i = model.bodies()[b].inertia();
+            (b, i.com(), i.mass())
+        })
+        .filter(|a| a.2 > 0.0)
+        .collect()
+}
