@@ -6,7 +6,8 @@
 //! With `G_0 = b r^-1 b^T`, `H_0 = Q`, `A_0 = A` and `W_k = E + G_k H_k`:
 //! `A_{k+1} = A_k W_k^-1 A_k`, `G_{k+1} = G_k + A_k W_k^-1 G_k A_k^T`,
 //! `H_{k+1} = H_k + A_k^T H_k W_k^-1 A_k`; `H_k -> P`. The result is accepted only if the
-//! relative DARE residual is below `1e-9`. The doubling result is polished by Newton-Kleinman
+//! relative DARE residual is below `1e-9` and the closed loop is stable (the stabilising
+//! solution; the DARE has others). The doubling result is polished by Newton-Kleinman
 //! steps (Lyapunov solves) while the residual decreases: at the 1-5 ms periods of a walking
 //! controller the doubling alone leaves relative residuals ~1e-5 (P spans many magnitudes).
 
@@ -84,6 +85,12 @@ pub fn solve_dare<const N: usize>(
         (p, residual) = (next, res);
     }
     if residual.is_finite() && residual < 1e-9 {
+        let decay = closed_loop_decay(a, b, r, &p);
+        if !(decay < 1e-6) {
+            return Err(PatternError::Unstable {
+                spectral_radius: decay,
+            });
+        }
         Ok(DareSolution {
             p,
             residual,
@@ -118,4 +125,24 @@ fn newton_step<const N: usize>(
         .solve(&DVector::from_column_slice(rhs.as_slice()))?;
     let next = SMatrix::<f64, N, N>::from_column_slice(sol.as_slice());
     Some(0.5 * (next + next.transpose()))
+}
+
+/// `|A_c^(2^40)|` for the closed loop of `p`, by repeated squaring: ~0 iff `A_c` is stable,
+/// i.e. iff `p` is the stabilising solution (the DARE also has non-stabilising ones).
+fn closed_loop_decay<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    b: &SVector<f64, N>,
+    r: f64,
+    p: &SMatrix<f64, N, N>,
+) -> f64 {
+    let pb = p * b;
+    let mut m = a - b * (pb.transpose() * a) / (r + b.dot(&pb));
+    for _ in 0..40 {
+        m = m * m;
+        let norm = m.norm();
+        if !norm.is_finite() || norm > 1e100 {
+            return f64::INFINITY;
+        }
+    }
+    m.norm()
 }

@@ -32,7 +32,8 @@ pub enum PatternError {
     /// The closed loop of the preview controller is not asymptotically stable.
     #[error("preview controller closed loop unstable (spectral radius {spectral_radius})")]
     Unstable {
-        /// Largest eigenvalue modulus of the closed-loop matrix.
+        /// Largest eigenvalue modulus of the closed-loop matrix (from the DARE check: the norm
+        /// of its 2^40-th power, infinite when unstable).
         spectral_radius: f64,
     },
     /// The robot model needed for a fitted default failed.
