@@ -1,0 +1,166 @@
+//! Decentralised joint position control: a PD law per actuated joint without gravity
+//! compensation, with gains scaled by the joint-space inertia so that every joint gets the
+//! same closed-loop bandwidth.
+
+use super::{Commands, Controller};
+use crate::drive::DriveMode;
+use crate::error::{finite, positive, SimError};
+use crate::plant::Plant;
+use crate::sensors::Sensors;
+use nalgebra::DVector;
+
+/// Joint reference trajectory: writes `q_ref(t)` (one per actuator) into the slice.
+pub type Trajectory = Box<dyn FnMut(f64, &mut [f64]) + Send>;
+
+/// PD joint position controller: `tau = k_p (q_ref - q) - k_d qdot`.
+pub struct JointPd {
+    period: f64,
+    target: Vec<f64>,
+    kp: Vec<f64>,
+    kd: Vec<f64>,
+    trajectory: Option<Trajectory>,
+    /// Torque-to-command factor per actuator (1 for torque, `1 / (k_t n)` for current).
+    scale: Vec<f64>,
+    mode: DriveMode,
+}
+
+impl std::fmt::Debug for JointPd {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("JointPd")
+            .field("period", &self.period)
+            .field("kp", &self.kp)
+            .field("kd", &self.kd)
+            .finish()
+    }
+}
+
+impl JointPd {
+    /// PD with explicit gains (torque output); all vectors of the same length.
+    pub fn new(
+        period: f64,
+        target: Vec<f64>,
+        kp: Vec<f64>,
+        kd: Vec<f64>,
+    ) -> Result<Self, SimError> {
+        positive("period", period, false)?;
+        let n = target.len();
+        for (what, x) in [("kp", &kp), ("kd", &kd)] {
+            if x.len() != n {
+                return Err(SimError::Length {
+                    what,
+                    got: x.len(),
+                    expected: n,
+                });
+            }
+        }
+        finite("target", &target)?;
+        finite("gains", &kp)?;
+        finite("gains", &kd)?;
+        Ok(Self {
+            period,
+            target,
+            kp,
+            kd,
+            trajectory: None,
+            scale: vec![1.0; n],
+            mode: DriveMode::Torque,
+        })
+    }
+
+    /// Gains `k_p = w^2 m_j`, `k_d = 2 zeta w m_j` with `m_j = m_sub + m_rest` of
+    /// [`Plant::actuator_inertias`] at `q0`: a leg joint gets bandwidth `w` both when its
+    /// subtree swings freely and when the ground holds the subtree and the joint moves the rest
+    /// of the robot (a stance ankle carrying the body as an inverted pendulum). Both gains are
+    /// capped for the free subtree under the zero-order hold of period `T`: with
+    /// `a = k_p T^2 / m_sub` and `b = k_d T / m_sub` the sampled loop has the characteristic
+    /// polynomial `z^2 + (a/2 + b - 2) z + (a/2 - b + 1)`, stable (Jury) for `a/2 < b < 2`;
+    /// the caps `b <= 1/2`, `a <= 1/2` keep it inside. Target = the joint angles of `q0`.
+    pub fn scaled(
+        plant: &mut Plant,
+        q0: &DVector<f64>,
+        period: f64,
+        bandwidth: f64,
+        damping: f64,
+    ) -> Result<Self, SimError> {
+        positive("period", period, false)?;
+        positive("bandwidth", bandwidth, false)?;
+        positive("damping", damping, true)?;
+        let m = plant.actuator_inertias(q0)?;
+        let target = plant.actuators().iter().map(|a| q0[a.joint_q]).collect();
+        let t2 = period * period;
+        let kp = m
+            .iter()
+            .map(|(s, r)| (bandwidth * bandwidth * (s + r)).min(0.5 * s / t2))
+            .collect();
+        let kd = m
+            .iter()
+            .map(|(s, r)| (2.0 * damping * bandwidth * (s + r)).min(0.5 * s / period))
+            .collect();
+        Self::new(period, target, kp, kd)
+    }
+
+    /// Follows `trajectory` instead of the constant target.
+    pub fn with_trajectory(mut self, trajectory: Trajectory) -> Self {
+        self.trajectory = Some(trajectory);
+        self
+    }
+
+    /// Outputs motor currents `tau / (k_t n_nominal)` for a plant in current mode (the ankle's
+    /// coupled screws are mapped per actuator with their nominal ratio: an approximation).
+    pub fn with_current_output(mut self, plant: &Plant) -> Self {
+        self.scale = plant
+            .actuators()
+            .iter()
+            .map(|a| 1.0 / (a.motor.torque_constant * a.nominal_ratio))
+            .collect();
+        self.mode = DriveMode::Current;
+        self
+    }
+
+    /// Current joint reference.
+    pub fn target(&self) -> &[f64] {
+        &self.target
+    }
+
+    /// Proportional gains.
+    pub fn kp(&self) -> &[f64] {
+        &self.kp
+    }
+
+    /// Derivative gains.
+    pub fn kd(&self) -> &[f64] {
+        &self.kd
+    }
+}
+
+impl Controller for JointPd {
+    fn period(&self) -> f64 {
+        self.period
+    }
+
+    fn mode(&self) -> DriveMode {
+        self.mode
+    }
+
+    fn update(&mut self, t: f64, s: &Sensors, c: &mut Commands) -> Result<(), SimError> {
+        let n = self.target.len();
+        if s.joint_positions.len() != n || c.values.len() != n {
+            return Err(SimError::Length {
+                what: "sensors/commands",
+                got: c.values.len(),
+                expected: n,
+            });
+        }
+        if let Some(traj) = self.trajectory.as_mut() {
+            traj(t, &mut self.target);
+            finite("trajectory", &self.target)?;
+        }
+        for j in 0..n {
+            let tau = self.kp[j] * (self.target[j] - s.joint_positions[j])
+                - self.kd[j] * s.joint_velocities[j];
+            c.values[j] = tau * self.scale[j];
+        }
+        c.mode = self.mode;
+        Ok(())
+    }
+}

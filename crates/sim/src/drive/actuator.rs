@@ -1,0 +1,236 @@
+//! One actuator: motor, friction and the transmission to the generalized coordinates.
+
+use super::{DriveMode, FrictionParams, MotorParams};
+use crate::error::SimError;
+use biped_dynamics::mechanism::{Coupling, MAX_COUPLED};
+use biped_dynamics::{BodyId, JointModel, Model};
+use serde::Serialize;
+
+/// How the motor is connected to the generalized coordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub enum Transmission {
+    /// Ideal joint-torque source on the joint coordinate (no motor); takes torque commands in
+    /// every drive mode.
+    Direct,
+    /// Rigid gear of ratio `N` (motor speed `N qdot`), e.g. a rigid Harmonic Drive (3.1).
+    Gear {
+        /// Gear ratio `N`.
+        ratio: f64,
+    },
+    /// Motor rotor that is a coupled part (knee, ankle roller screws): the motor-rate row is
+    /// the spin (part-frame z) row of the rotor's relative Jacobian (3.5), (3.32).
+    Rotor {
+        /// Rotor body.
+        body: BodyId,
+        /// Input coordinates (q indices), first `n` used.
+        q_in: [usize; MAX_COUPLED],
+        /// Input coordinates (v indices), first `n` used.
+        v_in: [usize; MAX_COUPLED],
+        /// Number of inputs.
+        n: usize,
+    },
+    /// Elastic gear of Type 3: the motor has its own coordinate; the gear spring-damper acts
+    /// between motor and link (added by the plant).
+    Elastic {
+        /// Motor coordinate in `q`.
+        motor_q: usize,
+        /// Motor coordinate in `v`.
+        motor_v: usize,
+        /// Gear ratio `N`.
+        ratio: f64,
+    },
+}
+
+/// Motor-rate row `omega_m = n(q) v`: at most [`MAX_COUPLED`] non-zeros.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct MotorRow {
+    idx: [usize; MAX_COUPLED],
+    coef: [f64; MAX_COUPLED],
+    len: usize,
+}
+
+impl MotorRow {
+    fn single(idx: usize, coef: f64) -> Self {
+        let mut r = Self::default();
+        r.idx[0] = idx;
+        r.coef[0] = coef;
+        r.len = 1;
+        r
+    }
+
+    /// Motor speed `n v`.
+    #[inline]
+    pub fn rate(&self, v: &[f64]) -> f64 {
+        (0..self.len).map(|k| self.coef[k] * v[self.idx[k]]).sum()
+    }
+
+    /// Adds `n^T tau` to the generalized forces.
+    #[inline]
+    pub fn apply(&self, tau: f64, gen: &mut [f64]) {
+        for k in 0..self.len {
+            gen[self.idx[k]] += self.coef[k] * tau;
+        }
+    }
+
+    /// The non-zero `(v index, coefficient)` pairs.
+    pub fn entries(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
+        (0..self.len).map(|k| (self.idx[k], self.coef[k]))
+    }
+}
+
+/// One actuated joint with its drive.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Actuator {
+    /// Joint name.
+    pub name: String,
+    /// Joint coordinate in `q`.
+    pub joint_q: usize,
+    /// Joint coordinate in `v`.
+    pub joint_v: usize,
+    /// Motor-to-coordinates transmission.
+    pub transmission: Transmission,
+    /// Motor constants.
+    pub motor: MotorParams,
+    /// Motor-side friction.
+    pub friction: FrictionParams,
+    /// Nominal `|d omega_m / d qdot_joint|` at the initial configuration (1 for `Direct`), for
+    /// converting joint torques to motor torques in simple controllers.
+    pub nominal_ratio: f64,
+}
+
+/// Motor-side quantities of one actuator at one instant.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DriveState {
+    /// Motor speed \[rad/s].
+    pub speed: f64,
+    /// Motor torque `k_t i` (or the commanded torque over the nominal ratio) \[N m].
+    pub torque: f64,
+    /// Friction torque \[N m].
+    pub friction: f64,
+    /// Current \[A] (commanded, integrated, or estimated in torque mode).
+    pub current: f64,
+    /// `di/dt` (voltage mode only, else 0).
+    pub current_rate: f64,
+}
+
+impl Actuator {
+    /// The rotor transmission of coupled body `body`, its inputs read from the model.
+    pub fn rotor_transmission(model: &Model, body: BodyId) -> Result<Transmission, SimError> {
+        let b = model.body(body).ok_or_else(|| SimError::Unknown {
+            kind: "rotor body",
+            name: format!("#{body}"),
+        })?;
+        let JointModel::Coupled { inputs, .. } = b.joint() else {
+            return Err(SimError::Unsupported(format!(
+                "`{}` is not a coupled part",
+                b.name()
+            )));
+        };
+        let (mut q_in, mut v_in) = ([0; MAX_COUPLED], [0; MAX_COUPLED]);
+        for (k, &inp) in inputs.iter().take(MAX_COUPLED).enumerate() {
+            let ib = model.body(inp).ok_or_else(|| SimError::Unknown {
+                kind: "input body",
+                name: format!("#{inp}"),
+            })?;
+            q_in[k] = ib.q_index();
+            v_in[k] = ib.v_index();
+        }
+        let n = inputs.len().min(MAX_COUPLED);
+        Ok(Transmission::Rotor {
+            body,
+            q_in,
+            v_in,
+            n,
+        })
+    }
+
+    /// Motor-rate row at `q`; `None` for `Direct`.
+    pub fn motor_row(&self, model: &Model, q: &[f64]) -> Result<Option<MotorRow>, SimError> {
+        Ok(match self.transmission {
+            Transmission::Direct => None,
+            Transmission::Gear { ratio } => Some(MotorRow::single(self.joint_v, ratio)),
+            Transmission::Elastic { motor_v, .. } => Some(MotorRow::single(motor_v, 1.0)),
+            Transmission::Rotor {
+                body,
+                q_in,
+                v_in,
+                n,
+            } => {
+                let Some(JointModel::Coupled { mechanism, .. }) =
+                    model.body(body).map(|b| b.joint())
+                else {
+                    return Err(SimError::Unsupported("rotor is not a coupled part".into()));
+                };
+                let mut qv = [0.0; MAX_COUPLED];
+                for k in 0..n {
+                    qv[k] = q[q_in[k]];
+                }
+                let m = mechanism.motion(&qv[..n], &[0.0; MAX_COUPLED][..n])?;
+                let mut row = MotorRow {
+                    len: n,
+                    ..MotorRow::default()
+                };
+                for k in 0..n {
+                    row.idx[k] = v_in[k];
+                    row.coef[k] = m.jacobian[k][2];
+                }
+                Some(row)
+            }
+        })
+    }
+
+    /// Adds this actuator's generalized forces to `gen` for the command `cmd` (interpreted by
+    /// `mode`) and the current state `i` (voltage mode), returns the motor-side state.
+    #[allow(clippy::too_many_arguments)]
+    pub fn apply(
+        &self,
+        row: Option<&MotorRow>,
+        mode: DriveMode,
+        cmd: f64,
+        i: f64,
+        v: &[f64],
+        gen: &mut [f64],
+    ) -> DriveState {
+        let Some(row) = row else {
+            gen[self.joint_v] += cmd;
+            return DriveState {
+                torque: cmd,
+                ..DriveState::default()
+            };
+        };
+        let speed = row.rate(v);
+        let m = &self.motor;
+        let (torque, current, current_rate) = match mode {
+            DriveMode::Torque => {
+                match self.transmission {
+                    Transmission::Elastic { ratio, .. } => gen[row.idx[0]] += cmd / ratio,
+                    _ => gen[self.joint_v] += cmd,
+                }
+                let tau = cmd / self.nominal_ratio;
+                (tau, tau / m.torque_constant, 0.0)
+            }
+            DriveMode::Current => {
+                let i = cmd.clamp(-m.max_current, m.max_current);
+                (m.torque(i), i, 0.0)
+            }
+            DriveMode::Voltage => {
+                let u = cmd.clamp(-m.max_voltage, m.max_voltage);
+                (m.torque(i), i, m.current_rate(u, i, speed))
+            }
+        };
+        let friction = self.friction.torque(speed, torque);
+        let drive = if mode == DriveMode::Torque {
+            0.0
+        } else {
+            torque
+        };
+        row.apply(drive - friction, gen);
+        DriveState {
+            speed,
+            torque,
+            friction,
+            current,
+            current_rate,
+        }
+    }
+}

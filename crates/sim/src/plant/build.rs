@@ -1,0 +1,245 @@
+//! Plants of the shipped robots: the Lola-like biped (Type 2 / Type 3) and URDF models with a
+//! floating base.
+//!
+//! Lola: one actuator per actuated joint (25). Harmonic Drive joints get a rigid gear (Type 2)
+//! or their elastic motor coordinate (Type 3); the knee gets its screw rotor; the two ankle
+//! joints get the two ankle screw rotors (rotor `k` of a multi-input mechanism drives input
+//! `k`); the kinematic vergence joint is a direct torque source. Feet: the bodies `l_foot` /
+//! `r_foot` with 8 sole points on the rectangle of the foot box, at the height of the sole
+//! markers `l_sole` / `r_sole`. The box's edge lengths are recovered from its inertia
+//! (`a^2 = 6 (I_yy + I_zz - I_xx) / m`, etc.), so they follow the parameter file.
+
+use super::{Plant, PlantConfig};
+use crate::contact::{sole_rectangle, FootSpec};
+use crate::drive::{Actuator, FrictionParams, MotorParams, Transmission};
+use crate::error::SimError;
+use biped_dynamics::model::Mechanism;
+use biped_dynamics::urdf::{self, UrdfOptions};
+use biped_dynamics::{BodyId, JointModel, Model};
+use biped_robots::lola::{self, LolaModel, LolaType};
+use nalgebra::{Point3, Vector3};
+use std::path::Path;
+
+/// A Lola plant together with the robot description it was built from.
+#[derive(Debug, Clone)]
+pub struct LolaPlant {
+    /// The plant.
+    pub plant: Plant,
+    /// Joint ranges, elastic gears and the model.
+    pub lola: LolaModel,
+}
+
+/// Builds the plant of the shipped Lola-like model.
+pub fn lola_plant(variant: LolaType, config: PlantConfig) -> Result<LolaPlant, SimError> {
+    let lola = lola::build(variant).map_err(|e| SimError::InvalidParameter {
+        what: "lola model".into(),
+        reason: e.to_string(),
+    })?;
+    let m = &lola.model;
+    let mut actuators = Vec::with_capacity(lola.limits.len());
+    for l in &lola.limits {
+        let body = m
+            .body_id(&l.name)
+            .ok_or_else(|| unknown("joint body", &l.name))?;
+        let gear = lola.gears.iter().find(|g| g.link_v == l.v_index);
+        let transmission = match gear {
+            Some(g) => Transmission::Elastic {
+                motor_q: g.motor_q,
+                motor_v: g.motor_v,
+                ratio: g.ratio,
+            },
+            None => rotor_of(m, body)?,
+        };
+        actuators.push(actuator(
+            m,
+            l.name.clone(),
+            l.q_index,
+            l.v_index,
+            transmission,
+        )?);
+    }
+    let feet = [("left", "l_foot", "l_sole"), ("right", "r_foot", "r_sole")]
+        .iter()
+        .map(|(name, foot, sole)| lola_foot(m, name, foot, sole))
+        .collect::<Result<Vec<_>, _>>()?;
+    let plant = Plant::new(m.clone(), actuators, &feet, lola.gears.clone(), config)?;
+    Ok(LolaPlant { plant, lola })
+}
+
+fn unknown(kind: &'static str, name: &str) -> SimError {
+    SimError::Unknown {
+        kind,
+        name: name.to_string(),
+    }
+}
+
+/// An actuator with default motor and friction; nominal ratio from the motor row at neutral.
+fn actuator(
+    m: &Model,
+    name: String,
+    q: usize,
+    v: usize,
+    t: Transmission,
+) -> Result<Actuator, SimError> {
+    let mut a = Actuator {
+        name,
+        joint_q: q,
+        joint_v: v,
+        transmission: t,
+        motor: MotorParams::default(),
+        friction: FrictionParams::default(),
+        nominal_ratio: 1.0,
+    };
+    let q0 = m.neutral();
+    a.nominal_ratio = match (t, a.motor_row(m, q0.as_slice())?) {
+        (Transmission::Elastic { ratio, .. }, _) => ratio.abs(),
+        (_, Some(row)) => row
+            .entries()
+            .find(|(i, _)| *i == v)
+            .map_or(1.0, |(_, c)| c.abs()),
+        (_, None) => 1.0,
+    };
+    if !(a.nominal_ratio > 0.0) {
+        a.nominal_ratio = 1.0;
+    }
+    Ok(a)
+}
+
+/// The motor rotor driving joint body `joint`: a coupled part whose name contains "rotor" and
+/// whose inputs contain `joint`; of a multi-input group, the `k`-th rotor drives input `k`.
+fn rotor_of(m: &Model, joint: BodyId) -> Result<Transmission, SimError> {
+    let mut group = Vec::new();
+    let mut slot = None;
+    for (id, b) in m.bodies().iter().enumerate() {
+        let JointModel::Coupled { mechanism, inputs } = b.joint() else {
+            continue;
+        };
+        if !b.name().contains("rotor") || !inputs.contains(&joint) {
+            continue;
+        }
+        if let Mechanism::HarmonicDrive(r) = mechanism {
+            return Ok(Transmission::Gear {
+                ratio: r.params().ratio,
+            });
+        }
+        slot = inputs.iter().position(|&i| i == joint);
+        group.push(id);
+    }
+    match slot.and_then(|k| group.get(k)) {
+        Some(&rotor) => Actuator::rotor_transmission(m, rotor),
+        None => Ok(Transmission::Direct),
+    }
+}
+
+/// Edge lengths of the solid box whose inertia the body carries.
+fn box_size(m: &Model, body: BodyId) -> [f64; 3] {
+    let Some(b) = m.body(body) else {
+        return [0.0; 3];
+    };
+    let i = b.inertia().inertia_about_com();
+    let mass = b.inertia().mass().max(1e-12);
+    let (xx, yy, zz) = (i[(0, 0)], i[(1, 1)], i[(2, 2)]);
+    [yy + zz - xx, xx + zz - yy, xx + yy - zz].map(|s| (6.0 * s / mass).max(0.0).sqrt())
+}
+
+/// A Lola foot: 8 points on the foot box's rectangle at the sole marker's height.
+fn lola_foot(m: &Model, name: &str, foot: &str, sole: &str) -> Result<FootSpec, SimError> {
+    let fb = m.body_id(foot).ok_or_else(|| unknown("foot body", foot))?;
+    let sb = m
+        .body_id(sole)
+        .ok_or_else(|| unknown("sole marker", sole))?;
+    let sole_z = m
+        .body(sb)
+        .map_or(0.0, |b| b.placement().translation.vector.z);
+    let com = m.body(fb).map_or(Vector3::zeros(), |b| b.inertia().com());
+    let [len, wid, _] = box_size(m, fb);
+    let center = Vector3::new(com.x, com.y, sole_z);
+    Ok(FootSpec {
+        name: name.to_string(),
+        body: foot.to_string(),
+        points: sole_rectangle(center, len, wid),
+        reference: center,
+    })
+}
+
+/// Feet of a URDF model: link names and the sole rectangle in each link's frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct UrdfFeet {
+    /// `(signal name, URDF link)` of each foot.
+    pub links: Vec<(String, String)>,
+    /// Sole rectangle centre in the link frame \[m] (default `(0, 0, -0.05)`).
+    pub center: Vector3<f64>,
+    /// Sole length along the link's x \[m] (default 0.20).
+    pub length: f64,
+    /// Sole width along the link's y \[m] (default 0.10).
+    pub width: f64,
+}
+
+impl UrdfFeet {
+    /// Two feet with the default sole rectangle (0.20 m x 0.10 m, 5 cm below the link frame).
+    pub fn new(left: &str, right: &str) -> Self {
+        Self {
+            links: vec![("left".into(), left.into()), ("right".into(), right.into())],
+            center: Vector3::new(0.0, 0.0, -0.05),
+            length: 0.20,
+            width: 0.10,
+        }
+    }
+}
+
+/// Gear ratio given to every URDF joint's motor (URDF has no drive data; the rotor inertia is
+/// not part of the model).
+pub const URDF_GEAR_RATIO: f64 = 100.0;
+
+/// Plant of a URDF model with a floating base: every revolute/prismatic joint is actuated
+/// through a rigid gear of [`URDF_GEAR_RATIO`]; `feet` name the sole links.
+pub fn urdf_plant(path: &Path, feet: &UrdfFeet, config: PlantConfig) -> Result<Plant, SimError> {
+    let opts = UrdfOptions {
+        floating: true,
+        reject_mimic: false,
+    };
+    let u = urdf::load_file(path, &opts).map_err(|e| SimError::InvalidParameter {
+        what: "urdf".into(),
+        reason: e.to_string(),
+    })?;
+    let m = &u.model;
+    let mut actuators = Vec::new();
+    for b in m.bodies() {
+        if matches!(
+            b.joint(),
+            JointModel::Revolute { .. } | JointModel::Prismatic { .. }
+        ) {
+            let t = Transmission::Gear {
+                ratio: URDF_GEAR_RATIO,
+            };
+            actuators.push(actuator(
+                m,
+                b.joint_name().to_string(),
+                b.q_index(),
+                b.v_index(),
+                t,
+            )?);
+        }
+    }
+    let mut specs = Vec::new();
+    for (name, link) in &feet.links {
+        let lf = u
+            .links
+            .iter()
+            .find(|l| &l.link == link)
+            .ok_or_else(|| unknown("foot link", link))?;
+        let body = lf
+            .body
+            .and_then(|b| m.body(b))
+            .ok_or_else(|| unknown("foot body of link", link))?;
+        let to_body = |p: Vector3<f64>| (lf.pose * Point3::from(p)).coords;
+        let local = sole_rectangle(feet.center, feet.length, feet.width);
+        specs.push(FootSpec {
+            name: name.clone(),
+            body: body.name().to_string(),
+            points: local.into_iter().map(to_body).collect(),
+            reference: to_body(feet.center),
+        });
+    }
+    Plant::new(m.clone(), actuators, &specs, Vec::new(), config)
+}

@@ -1,0 +1,434 @@
+//! The robot plant `zdot = f(z, u)` (2.2)-(2.4) assembled from the model layers of Table 2.3:
+//! rigid multibody dynamics (O(n) forward dynamics with sub-systems), Type 3 elastic gears,
+//! drive dynamics ([`crate::drive`]) and the contact layer ([`crate::contact`]). The input `u`
+//! (the actuator commands) is held inside the plant and set by the control loop before each
+//! control period (zero-order hold, Fig. 2.1).
+//!
+//! One right-hand side: contact forces from the foot chains, drive and gear torques, one
+//! forward-dynamics call, `qdot` from `v`. Every buffer is allocated in [`Plant::new`].
+
+mod build;
+mod energy;
+pub mod kinematics;
+pub mod layout;
+
+pub use build::{lola_plant, urdf_plant, LolaPlant, UrdfFeet};
+pub use energy::Energy;
+pub use layout::StateLayout;
+
+use crate::contact::{ContactOutput, ContactParams, ContactSet, FootSpec};
+use crate::controller::Commands;
+use crate::drive::actuator::{DriveState, MotorRow};
+use crate::drive::{Actuator, DriveMode};
+use crate::error::{finite, SimError};
+use crate::ode::{OdeSystem, SplitSystem};
+use biped_dynamics::{forward_dynamics, Algorithm, Data, Model, Wrench};
+use biped_robots::lola::ElasticGear;
+use kinematics::QdotMap;
+use nalgebra::DVector;
+use serde::{Deserialize, Serialize};
+
+/// Plant options.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct PlantConfig {
+    /// How the actuators are commanded.
+    pub mode: DriveMode,
+    /// Contact law and ground.
+    pub contact: ContactParams,
+    /// Elastic gear stiffness of Type 3 \[N m/rad] (link side).
+    pub gear_stiffness: f64,
+    /// Elastic gear damping of Type 3 \[N m s/rad] (link side).
+    pub gear_damping: f64,
+    /// Forward-dynamics algorithm (O(n) by default).
+    #[serde(skip, default = "default_algorithm")]
+    pub algorithm: Algorithm,
+}
+
+fn default_algorithm() -> Algorithm {
+    Algorithm::On
+}
+
+impl Default for PlantConfig {
+    /// Torque mode, default contact, Type 3 gears of 2e4 N m/rad and 20 N m s/rad.
+    fn default() -> Self {
+        Self {
+            mode: DriveMode::Torque,
+            contact: ContactParams::default(),
+            gear_stiffness: 2.0e4,
+            gear_damping: 20.0,
+            algorithm: Algorithm::On,
+        }
+    }
+}
+
+/// Everything the plant computes besides `zdot` at one state (overwritten by every call).
+#[derive(Debug, Clone, Default)]
+pub struct PlantOutputs {
+    /// Contact forces, foot wrenches and foot poses.
+    pub contact: ContactOutput,
+    /// Motor-side state of each actuator.
+    pub drives: Vec<DriveState>,
+}
+
+/// Robot plant: model, drives, contacts, state layout and the held command.
+#[derive(Debug, Clone)]
+pub struct Plant {
+    model: Model,
+    data: Data,
+    config: PlantConfig,
+    layout: StateLayout,
+    actuators: Vec<Actuator>,
+    gears: Vec<ElasticGear>,
+    contact: ContactSet,
+    qdot: QdotMap,
+    commands: Vec<f64>,
+    q: DVector<f64>,
+    v: DVector<f64>,
+    tau: DVector<f64>,
+    fext: Vec<Wrench>,
+    rows: Vec<Option<MotorRow>>,
+    out: PlantOutputs,
+    scratch: Vec<f64>,
+    rhs_count: u64,
+}
+
+impl Plant {
+    /// Assembles a plant; validates actuator indices, motor and friction parameters and feet.
+    pub fn new(
+        model: Model,
+        actuators: Vec<Actuator>,
+        feet: &[FootSpec],
+        gears: Vec<ElasticGear>,
+        config: PlantConfig,
+    ) -> Result<Self, SimError> {
+        for a in &actuators {
+            a.motor.validate()?;
+            a.friction.validate()?;
+            if a.joint_q >= model.nq() || a.joint_v >= model.nv() || !(a.nominal_ratio > 0.0) {
+                return Err(SimError::InvalidParameter {
+                    what: format!("actuator `{}`", a.name),
+                    reason: "joint index out of range or nominal ratio <= 0".into(),
+                });
+            }
+        }
+        crate::error::positive("gear_stiffness", config.gear_stiffness, true)?;
+        crate::error::positive("gear_damping", config.gear_damping, true)?;
+        let contact = ContactSet::new(&model, config.contact, feet)?;
+        let ncurrent = if config.mode == DriveMode::Voltage {
+            actuators.len()
+        } else {
+            0
+        };
+        let layout = StateLayout {
+            nq: model.nq(),
+            nv: model.nv(),
+            ncontact: contact.nstates(),
+            ncurrent,
+        };
+        let out = PlantOutputs {
+            contact: contact.output(),
+            drives: vec![DriveState::default(); actuators.len()],
+        };
+        Ok(Self {
+            data: Data::new(&model),
+            qdot: QdotMap::new(&model),
+            q: model.neutral(),
+            v: DVector::zeros(model.nv()),
+            tau: DVector::zeros(model.nv()),
+            fext: vec![Wrench::zero(); model.nbodies()],
+            rows: vec![None; actuators.len()],
+            commands: vec![0.0; actuators.len()],
+            model,
+            config,
+            layout,
+            actuators,
+            gears,
+            contact,
+            out,
+            scratch: vec![0.0; layout.dim()],
+            rhs_count: 0,
+        })
+    }
+
+    /// The multibody model.
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// The options the plant was built with.
+    pub fn config(&self) -> &PlantConfig {
+        &self.config
+    }
+
+    /// Layout of `z`.
+    pub fn layout(&self) -> StateLayout {
+        self.layout
+    }
+
+    /// The actuators, in command order.
+    pub fn actuators(&self) -> &[Actuator] {
+        &self.actuators
+    }
+
+    /// Type 3 elastic gears (empty otherwise).
+    pub fn gears(&self) -> &[ElasticGear] {
+        &self.gears
+    }
+
+    /// The feet and contact law.
+    pub fn contact(&self) -> &ContactSet {
+        &self.contact
+    }
+
+    /// Drive mode (the kind of command the plant expects).
+    pub fn mode(&self) -> DriveMode {
+        self.config.mode
+    }
+
+    /// Number of right-hand-side evaluations so far.
+    pub fn rhs_count(&self) -> u64 {
+        self.rhs_count
+    }
+
+    /// The held command values.
+    pub fn commands(&self) -> &[f64] {
+        &self.commands
+    }
+
+    /// Holds `c` as the input until the next call (checks kind, length and finiteness).
+    pub fn set_commands(&mut self, c: &Commands) -> Result<(), SimError> {
+        if c.mode != self.config.mode {
+            return Err(SimError::CommandKind {
+                got: c.mode,
+                expected: self.config.mode,
+            });
+        }
+        if c.values.len() != self.commands.len() {
+            return Err(SimError::Length {
+                what: "commands",
+                got: c.values.len(),
+                expected: self.commands.len(),
+            });
+        }
+        finite("commands", &c.values)?;
+        self.commands.copy_from_slice(&c.values);
+        Ok(())
+    }
+
+    /// Initial state `z` from `(q, v)`: relaxed contact bristles, zero currents.
+    pub fn initial_state(&self, q: &DVector<f64>, v: &DVector<f64>) -> Result<Vec<f64>, SimError> {
+        let l = self.layout;
+        if q.len() != l.nq || v.len() != l.nv {
+            return Err(SimError::Length {
+                what: "q or v",
+                got: q.len() + v.len(),
+                expected: l.nq + l.nv,
+            });
+        }
+        finite("q", q.as_slice())?;
+        finite("v", v.as_slice())?;
+        let mut z = vec![0.0; l.dim()];
+        z[l.q()].copy_from_slice(q.as_slice());
+        z[l.v()].copy_from_slice(v.as_slice());
+        self.qdot.normalize(&mut z[l.q()]);
+        Ok(z)
+    }
+
+    /// Contact and drive outputs at `z` with the held command (no dynamics call); the
+    /// contact-state rates computed on the way are discarded.
+    pub fn outputs(&mut self, z: &[f64]) -> Result<&PlantOutputs, SimError> {
+        let mut scratch = std::mem::take(&mut self.scratch);
+        let r = self.forces(z, &mut scratch);
+        self.scratch = scratch;
+        r.map(|_| &self.out)
+    }
+
+    /// Outputs of the last [`Self::outputs`] or right-hand side.
+    pub fn last_outputs(&self) -> &PlantOutputs {
+        &self.out
+    }
+
+    /// External body wrenches of the last evaluation (contact wrenches on the foot bodies, body
+    /// frame, moment about the body origin; zero elsewhere).
+    pub fn external_wrenches(&self) -> &[Wrench] {
+        &self.fext
+    }
+
+    /// `(q index, v index)` of the floating base's quaternion joint, if any.
+    pub fn floating_base(&self) -> Option<(usize, usize)> {
+        self.qdot.floating_base()
+    }
+
+    /// Inertia seen by each actuator at `q`, `(m_sub, m_rest)`: the mass-matrix diagonal at the
+    /// joint coordinate (its subtree plus reflected rotor inertia; for Type 3 plus `N^2` times
+    /// the motor's diagonal) and the rigid inertia of all other bodies about the joint axis
+    /// (what the joint moves when its subtree is held by the ground, e.g. a stance ankle moving
+    /// the body; 0 for joints without a foot in their subtree).
+    pub fn actuator_inertias(&mut self, q: &DVector<f64>) -> Result<Vec<(f64, f64)>, SimError> {
+        let m = biped_dynamics::mass_matrix(&self.model, &mut self.data, q)?.clone();
+        let mut out = Vec::with_capacity(self.actuators.len());
+        for a in &self.actuators {
+            let mut sub = m[(a.joint_v, a.joint_v)];
+            if let crate::drive::Transmission::Elastic { motor_v, ratio, .. } = a.transmission {
+                sub += ratio * ratio * m[(motor_v, motor_v)];
+            }
+            out.push((sub, self.rest_inertia(a.joint_v)));
+        }
+        Ok(out)
+    }
+
+    /// Rigid inertia about the axis of the one-DoF joint owning `v` of every body outside its
+    /// subtree, if the subtree holds a foot (else 0: nothing can hold it); world poses from the
+    /// last kinematics pass.
+    fn rest_inertia(&self, v: usize) -> f64 {
+        let bodies = self.model.bodies();
+        let Some(j) = bodies
+            .iter()
+            .position(|b| b.owns_coordinates() && b.v_index() == v && b.joint().nv() == 1)
+        else {
+            return 0.0;
+        };
+        let axis = match bodies[j].joint() {
+            biped_dynamics::JointModel::Revolute { axis } => {
+                self.data.world_rot[j] * axis.into_inner()
+            }
+            _ => return 0.0,
+        };
+        let p = self.data.world_pos[j];
+        let in_subtree = |mut i: usize| loop {
+            if i == j {
+                return true;
+            }
+            match bodies[i].parent() {
+                Some(par) => i = par,
+                None => return false,
+            }
+        };
+        if !self.contact.bodies().any(in_subtree) {
+            return 0.0;
+        }
+        (0..bodies.len())
+            .filter(|&i| !in_subtree(i))
+            .map(|i| {
+                let (r, inertia) = (self.data.world_rot[i], bodies[i].inertia());
+                let c = self.data.world_pos[i] + r * inertia.com() - p;
+                let a_body = r.transpose() * axis;
+                a_body.dot(&(inertia.inertia_about_com() * a_body))
+                    + inertia.mass() * axis.cross(&c).norm_squared()
+            })
+            .sum()
+    }
+
+    /// The model and the workspace, for kinematics queries (CoM, Jacobians) at a state.
+    pub fn model_and_data(&mut self) -> (&Model, &mut Data) {
+        (&self.model, &mut self.data)
+    }
+
+    /// Workspace of the last dynamics or kinematics call (body poses etc.).
+    pub fn data(&self) -> &Data {
+        &self.data
+    }
+
+    /// Copies `z` into the work vectors, then contact, drive and gear forces into `fext` and
+    /// `tau`, contact and current rates into `zdot`.
+    fn forces(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
+        let l = self.layout;
+        if z.len() != l.dim() || zdot.len() != l.dim() {
+            return Err(SimError::Length {
+                what: "z",
+                got: z.len(),
+                expected: l.dim(),
+            });
+        }
+        self.q.as_mut_slice().copy_from_slice(&z[l.q()]);
+        self.v.as_mut_slice().copy_from_slice(&z[l.v()]);
+        let (q, v) = (self.q.as_slice(), self.v.as_slice());
+        self.contact.evaluate(
+            q,
+            v,
+            &z[l.contact()],
+            &mut zdot[l.contact()],
+            &mut self.fext,
+            &mut self.out.contact,
+        );
+        self.tau.fill(0.0);
+        let tau = self.tau.as_mut_slice();
+        let voltage = self.config.mode == DriveMode::Voltage;
+        for (k, a) in self.actuators.iter().enumerate() {
+            self.rows[k] = a.motor_row(&self.model, q)?;
+            let i = if voltage {
+                z[l.currents().start + k]
+            } else {
+                0.0
+            };
+            let ds = a.apply(
+                self.rows[k].as_ref(),
+                self.config.mode,
+                self.commands[k],
+                i,
+                v,
+                tau,
+            );
+            if voltage {
+                zdot[l.currents().start + k] = ds.current_rate;
+            }
+            self.out.drives[k] = ds;
+        }
+        let (k, d) = (self.config.gear_stiffness, self.config.gear_damping);
+        for g in &self.gears {
+            let torque = k * (q[g.motor_q] / g.ratio - q[g.link_q])
+                + d * (v[g.motor_v] / g.ratio - v[g.link_v]);
+            tau[g.link_v] += torque;
+            tau[g.motor_v] -= torque / g.ratio;
+        }
+        Ok(())
+    }
+
+    /// The right-hand side with typed errors.
+    fn eval(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
+        self.rhs_count += 1;
+        self.forces(z, zdot)?;
+        let l = self.layout;
+        let (m, algo) = (&self.model, self.config.algorithm);
+        let ddq = forward_dynamics(
+            m,
+            &mut self.data,
+            &self.q,
+            &self.v,
+            &self.tau,
+            Some(&self.fext),
+            algo,
+        )?;
+        finite("qddot", ddq.as_slice())?;
+        zdot[l.v()].copy_from_slice(ddq.as_slice());
+        self.qdot.qdot(&z[l.q()], &z[l.v()], &mut zdot[l.q()]);
+        Ok(())
+    }
+}
+
+impl OdeSystem for Plant {
+    type Error = SimError;
+
+    fn dim(&self) -> usize {
+        self.layout.dim()
+    }
+
+    fn rhs(&mut self, _t: f64, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
+        self.eval(z, zdot)
+    }
+
+    fn project(&self, z: &mut [f64]) {
+        self.qdot.normalize(&mut z[self.layout.q()]);
+    }
+}
+
+impl SplitSystem for Plant {
+    fn position_len(&self) -> usize {
+        self.layout.nq
+    }
+
+    fn position_rate(&self, z: &[f64], xdot: &mut [f64]) {
+        let l = self.layout;
+        self.qdot.qdot(&z[l.q()], &z[l.v()], &mut xdot[..l.nq]);
+    }
+}

@@ -1,0 +1,121 @@
+//! Result of one run, serialisable (the CLI's `summary.json`).
+
+use super::Simulation;
+use crate::controller::Controller;
+use crate::drive::DriveMode;
+use crate::plant::StateLayout;
+use nalgebra::Vector3;
+use serde::Serialize;
+
+/// One pass criterion of a scenario.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Check {
+    /// What is checked.
+    pub name: String,
+    /// Measured value.
+    pub value: f64,
+    /// Limit it is compared with.
+    pub limit: f64,
+    /// Whether the criterion holds.
+    pub passed: bool,
+}
+
+/// Summary of a run.
+#[derive(Debug, Clone, Serialize)]
+pub struct Summary {
+    /// Integration method.
+    pub method: String,
+    /// Drive mode.
+    pub drive_mode: DriveMode,
+    /// Control period \[s].
+    pub control_period: f64,
+    /// Simulated time of this run \[s].
+    pub sim_time: f64,
+    /// Wall-clock time of the loop \[s] (sensors, controller, observer, integration).
+    pub wall_time: f64,
+    /// `sim_time / wall_time`.
+    pub realtime_factor: f64,
+    /// Control cycles.
+    pub control_cycles: u64,
+    /// Integrator steps.
+    pub steps: u64,
+    /// Right-hand-side evaluations (each one forward-dynamics call).
+    pub rhs_evaluations: u64,
+    /// State layout (Table 2.3 counts).
+    pub layout: StateLayout,
+    /// Total mass \[kg].
+    pub mass: f64,
+    /// Weight `m |g|` \[N].
+    pub weight: f64,
+    /// CoM at the start of the run \[m].
+    pub initial_com: [f64; 3],
+    /// CoM at the end \[m].
+    pub final_com: [f64; 3],
+    /// Largest total vertical contact force at the control samples \[N].
+    pub max_contact_force: f64,
+    /// Total vertical contact force at the end \[N].
+    pub final_contact_force: f64,
+    /// Largest `|v_i|` at the end (all velocity coordinates).
+    pub final_max_speed: f64,
+    /// Largest joint speed of the actuated joints at the end \[rad/s].
+    pub final_max_joint_speed: f64,
+    /// Pass criteria (filled by a scenario).
+    pub checks: Vec<Check>,
+}
+
+impl Summary {
+    /// Summary of the run that just ended on `sim`.
+    pub(super) fn new<C: Controller>(
+        sim: &Simulation<C>,
+        (t0, wall): (f64, f64),
+        (rhs0, steps0, cycles): (u64, u64, u64),
+        (com0, com1): (Vector3<f64>, Vector3<f64>),
+    ) -> Self {
+        let plant = &sim.plant;
+        let l = plant.layout();
+        let mass: f64 = plant
+            .model()
+            .bodies()
+            .iter()
+            .map(|b| b.inertia().mass())
+            .sum();
+        let sim_time = sim.t - t0;
+        let abs_max = |x: &[f64]| x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        Self {
+            method: sim.method().name().to_string(),
+            drive_mode: plant.mode(),
+            control_period: sim.controller.period(),
+            sim_time,
+            wall_time: wall,
+            realtime_factor: if wall > 0.0 {
+                sim_time / wall
+            } else {
+                f64::INFINITY
+            },
+            control_cycles: cycles,
+            steps: sim.steps - steps0,
+            rhs_evaluations: plant.rhs_count() - rhs0,
+            layout: l,
+            mass,
+            weight: mass * plant.model().gravity().norm(),
+            initial_com: com0.into(),
+            final_com: com1.into(),
+            max_contact_force: sim.max_contact,
+            final_contact_force: plant
+                .last_outputs()
+                .contact
+                .feet
+                .iter()
+                .map(|f| f.force.z)
+                .sum(),
+            final_max_speed: abs_max(&sim.z[l.v()]),
+            final_max_joint_speed: abs_max(&sim.sensors.joint_velocities),
+            checks: Vec::new(),
+        }
+    }
+
+    /// True if every check passed.
+    pub fn passed(&self) -> bool {
+        self.checks.iter().all(|c| c.passed)
+    }
+}
