@@ -143,12 +143,12 @@ fn overlap_test_on_foot_rectangles() {
     // Rotated by 90 degrees: the heel (0.09 m) of the other foot points towards -y.
     assert!(feet_overlap(
         &at(0.0, 0.0, 0.0),
-        &at(0.0, 0.14, 1.5708),
+        &at(0.0, 0.14, std::f64::consts::FRAC_PI_2),
         &foot
     ));
     assert!(!feet_overlap(
         &at(0.0, 0.0, 0.0),
-        &at(0.0, 0.16, 1.5708),
+        &at(0.0, 0.16, std::f64::consts::FRAC_PI_2),
         &foot
     ));
     let narrow = PatternParams {

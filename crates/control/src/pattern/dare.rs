@@ -79,14 +79,14 @@ pub fn solve_dare<const N: usize>(
             break;
         };
         let res = dare_residual(a, b, q, r, &next);
-        if !(res < residual) {
+        if res.partial_cmp(&residual) != Some(std::cmp::Ordering::Less) {
             break;
         }
         (p, residual) = (next, res);
     }
     if residual.is_finite() && residual < 1e-9 {
         let decay = closed_loop_decay(a, b, r, &p);
-        if !(decay < 1e-6) {
+        if decay.is_nan() || decay >= 1e-6 {
             return Err(PatternError::Unstable {
                 spectral_radius: decay,
             });
