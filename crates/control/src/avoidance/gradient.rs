@@ -145,7 +145,11 @@ impl CollisionAvoidance {
                 continue;
             }
             summary.active += 1;
-            if summary.min_distance.map_or(true, |m| r.distance < m) {
+            let closer = match summary.min_distance {
+                Some(m) => r.distance < m,
+                None => true,
+            };
+            if closer {
                 summary.min_distance = Some(r.distance);
                 summary.min_pair = Some(k);
             }
