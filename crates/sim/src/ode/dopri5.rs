@@ -69,6 +69,17 @@ pub(crate) const BHAT: [f64; 7] = [
     1.0 / 40.0,
 ];
 
+/// Error weights `b_i - bhat_i`.
+const E: [f64; 7] = [
+    B[0] - BHAT[0],
+    B[1] - BHAT[1],
+    B[2] - BHAT[2],
+    B[3] - BHAT[3],
+    B[4] - BHAT[4],
+    B[5] - BHAT[5],
+    B[6] - BHAT[6],
+];
+
 /// Coefficients `d_i` of the fourth-order continuous extension (Hairer, Norsett & Wanner).
 pub(crate) const D: [f64; 7] = [
     -12715105075.0 / 11282082432.0,
@@ -203,10 +214,8 @@ fn try_step<S: OdeSystem>(
     for i in 1..7 {
         let (done, rest) = w.k.split_at_mut(i);
         let y = if i == 6 { &mut w.next } else { &mut w.stage };
-        for (j, yj) in y.iter_mut().enumerate() {
-            let incr: f64 = (0..i).map(|l| A[i][l] * done[l][j]).sum();
-            *yj = z[j] + h * incr;
-        }
+        y.copy_from_slice(z);
+        combine(y, h, &A[i][..i], done);
         eval(sys, t + C[i] * h, y, &mut rest[0], st)?;
     }
     finite(&w.next, t + h, Quantity::State)?;
@@ -214,11 +223,13 @@ fn try_step<S: OdeSystem>(
     if n == 0 {
         return Ok(0.0);
     }
+    let e = &mut w.stage;
+    e.fill(0.0);
+    combine(e, h, &E, &w.k);
     let mut sum = 0.0;
-    for (j, (y0, y1)) in z.iter().zip(&w.next).enumerate() {
-        let e: f64 = (0..7).map(|l| (B[l] - BHAT[l]) * w.k[l][j]).sum::<f64>() * h;
-        let sc = s.atol + s.rtol * y0.abs().max(y1.abs());
-        sum += (e / sc) * (e / sc);
+    for ((ej, y0), y1) in e.iter().zip(z).zip(&w.next) {
+        let r = ej / (s.atol + s.rtol * y0.abs().max(y1.abs()));
+        sum += r * r;
     }
     let err = (sum / n as f64).sqrt();
     if err.is_nan() {
@@ -228,6 +239,16 @@ fn try_step<S: OdeSystem>(
         });
     }
     Ok(err)
+}
+
+/// `y += h sum_l coef_l k_l` over the stages with non-zero coefficient (vectorisable axpys).
+fn combine(y: &mut [f64], h: f64, coef: &[f64], k: &[Vec<f64>]) {
+    for (&c, kl) in coef.iter().zip(k) {
+        if c != 0.0 {
+            let a = h * c;
+            y.iter_mut().zip(kl).for_each(|(yj, kj)| *yj += a * kj);
+        }
+    }
 }
 
 /// Sends the interpolated state at every pending output time in `(t, t_new]` to the sink.
