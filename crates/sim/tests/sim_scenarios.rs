@@ -1,71 +1,62 @@
-//! The three scenarios on Lola Type 2 / Type 3 with RK4 at the 1 ms control period.
+//! The three scenarios on Lola Type 2 (RK4 at the 1 ms control period) and Type 3 (RK4 at
+//! 0.1 ms for its stiff gears), checked by their pass criteria: a standing robot comes to rest
+//! and its contact force equals its weight within 0.1 %.
 
 use biped_robots::lola::LolaType;
-use biped_sim::ode::Method;
+use biped_sim::drive::DriveMode;
+use biped_sim::ode::{Method, Settings};
 use biped_sim::plant::{lola_plant, PlantConfig};
 use biped_sim::scenario::{build, ScenarioKind, ScenarioOptions};
+use biped_sim::simulation::Summary;
 
-fn run(
-    variant: LolaType,
-    kind: ScenarioKind,
-    duration: Option<f64>,
-) -> biped_sim::simulation::Summary {
+fn run(variant: LolaType, kind: ScenarioKind, h: f64, duration: Option<f64>) -> Summary {
     let mut lp = lola_plant(variant, PlantConfig::default()).unwrap();
     let opts = ScenarioOptions {
         duration,
         ..ScenarioOptions::lola()
     };
     let sc = build(kind, &mut lp.plant, &opts).unwrap();
-    let (summary, _) = sc.run(lp.plant, Method::Rk4, &mut |_| Ok(())).unwrap();
+    let (summary, _) = sc
+        .run_with(lp.plant, Method::Rk4, Settings::fixed(h), &mut |_| Ok(()))
+        .unwrap();
     println!("{}", serde_json::to_string_pretty(&summary).unwrap());
+    assert_eq!(summary.drive_mode, DriveMode::Torque);
     summary
 }
 
 #[test]
 fn stand_type2_comes_to_rest_and_carries_its_weight() {
-    let s = run(LolaType::Type2, ScenarioKind::Stand, None);
+    let s = run(LolaType::Type2, ScenarioKind::Stand, 1e-3, None);
+    assert!(s.passed(), "{:?}", s.checks);
+    assert_eq!(s.layout.table_2_3(), [31, 32, 0, 95]);
+    let err = (s.final_contact_force - s.weight).abs() / s.weight;
+    assert!(
+        err < 1e-3,
+        "contact force {} vs weight {}",
+        s.final_contact_force,
+        s.weight
+    );
+}
+
+#[test]
+fn drop_type2_lands_and_comes_to_rest() {
+    let s = run(LolaType::Type2, ScenarioKind::Drop, 1e-3, None);
+    assert!(s.passed(), "{:?}", s.checks);
+    assert!(
+        s.max_contact_force > s.weight,
+        "the landing impact exceeds the weight"
+    );
+}
+
+#[test]
+fn sway_type2_shifts_the_pelvis_between_the_feet() {
+    let s = run(LolaType::Type2, ScenarioKind::Sway, 1e-3, None);
     assert!(s.passed(), "{:?}", s.checks);
 }
 
 #[test]
-#[ignore]
-fn debug_stand() {
-    let mut lp = lola_plant(LolaType::Type2, PlantConfig::default()).unwrap();
-    let opts = ScenarioOptions {
-        duration: Some(3.0),
-        ..ScenarioOptions::lola()
-    };
-    let sc = build(ScenarioKind::Stand, &mut lp.plant, &opts).unwrap();
-    let mut k = 0;
-    let (summary, _) = sc
-        .run(lp.plant, Method::Rk4, &mut |f| {
-            if k % 100 == 0 {
-                let o = &f.plant.last_outputs().contact;
-                println!(
-                    "t={:.2} base=({:.4},{:.4},{:.4}) quat=({:.4},{:.4},{:.4}) fz=({:.1},{:.1}) cop_l={:?} maxv={:.3e}",
-                    f.t, f.z[0], f.z[1], f.z[2], f.z[3], f.z[4], f.z[5],
-                    o.feet[0].force.z, o.feet[1].force.z,
-                    o.feet[0].cop.map(|c| (c.x, c.y)),
-                    f.z[32..63].iter().fold(0.0f64, |m, v| m.max(v.abs()))
-                );
-            }
-            k += 1;
-            Ok(())
-        })
-        .unwrap();
-    println!("{}", serde_json::to_string_pretty(&summary.checks).unwrap());
-}
-
-#[test]
-#[ignore]
-fn debug_gains() {
-    let mut lp = lola_plant(LolaType::Type2, PlantConfig::default()).unwrap();
-    let q0 = lp.plant.model().neutral();
-    let m = lp.plant.actuator_inertias(&q0).unwrap();
-    for (a, (s, r)) in lp.plant.actuators().iter().zip(&m) {
-        println!(
-            "{:20} sub {:10.4} rest {:10.4} nominal {:8.2} {:?}",
-            a.name, s, r, a.nominal_ratio, a.transmission
-        );
-    }
+fn stand_type3_comes_to_rest_and_carries_its_weight() {
+    let s = run(LolaType::Type3, ScenarioKind::Stand, 1e-4, Some(4.0));
+    assert_eq!(s.layout.table_2_3(), [47, 32, 0, 127]);
+    assert!(s.passed(), "{:?}", s.checks);
 }

@@ -77,7 +77,7 @@ impl<O: Controller, I: InnerController> Controller for Cascade<O, I> {
     }
 
     fn update(&mut self, t: f64, s: &Sensors, c: &mut Commands) -> Result<(), SimError> {
-        if self.count % self.ratio == 0 {
+        if self.count.is_multiple_of(self.ratio) {
             self.outer.update(t, s, &mut self.setpoint)?;
         }
         self.count += 1;

@@ -3,7 +3,7 @@
 //! same closed-loop bandwidth.
 
 use super::{Commands, Controller};
-use crate::drive::DriveMode;
+use crate::drive::{DriveMode, Transmission};
 use crate::error::{finite, positive, SimError};
 use crate::plant::Plant;
 use crate::sensors::Sensors;
@@ -21,6 +21,9 @@ pub struct JointPd {
     trajectory: Option<Trajectory>,
     /// Torque-to-command factor per actuator (1 for torque, `1 / (k_t n)` for current).
     scale: Vec<f64>,
+    /// Per actuator: `Some(N)` feeds back the motor encoder divided by `N` (collocated control
+    /// of an elastic gear), `None` the joint encoder.
+    motor_feedback: Vec<Option<f64>>,
     mode: DriveMode,
 }
 
@@ -63,6 +66,7 @@ impl JointPd {
             kd,
             trajectory: None,
             scale: vec![1.0; n],
+            motor_feedback: vec![None; n],
             mode: DriveMode::Torque,
         })
     }
@@ -75,6 +79,10 @@ impl JointPd {
     /// `a = k_p T^2 / m_sub` and `b = k_d T / m_sub` the sampled loop has the characteristic
     /// polynomial `z^2 + (a/2 + b - 2) z + (a/2 - b + 1)`, stable (Jury) for `a/2 < b < 2`;
     /// the caps `b <= 1/2`, `a <= 1/2` keep it inside. Target = the joint angles of `q0`.
+    ///
+    /// Elastic (Type 3) gears are controlled collocated: the feedback is the motor encoder over
+    /// `N` (PD on the link encoder through the gear spring is non-collocated and goes unstable
+    /// at these gains), and the cap uses the reflected motor inertia `N^2 J_m` only.
     pub fn scaled(
         plant: &mut Plant,
         q0: &DVector<f64>,
@@ -90,13 +98,19 @@ impl JointPd {
         let t2 = period * period;
         let kp = m
             .iter()
-            .map(|(s, r)| (bandwidth * bandwidth * (s + r)).min(0.5 * s / t2))
+            .map(|i| (bandwidth * bandwidth * (i.sub + i.rest)).min(0.5 * i.free / t2))
             .collect();
         let kd = m
             .iter()
-            .map(|(s, r)| (2.0 * damping * bandwidth * (s + r)).min(0.5 * s / period))
+            .map(|i| (2.0 * damping * bandwidth * (i.sub + i.rest)).min(0.5 * i.free / period))
             .collect();
-        Self::new(period, target, kp, kd)
+        let mut pd = Self::new(period, target, kp, kd)?;
+        for (f, a) in pd.motor_feedback.iter_mut().zip(plant.actuators()) {
+            if let Transmission::Elastic { ratio, .. } = a.transmission {
+                *f = Some(ratio);
+            }
+        }
+        Ok(pd)
     }
 
     /// Follows `trajectory` instead of the constant target.
@@ -156,8 +170,11 @@ impl Controller for JointPd {
             finite("trajectory", &self.target)?;
         }
         for j in 0..n {
-            let tau = self.kp[j] * (self.target[j] - s.joint_positions[j])
-                - self.kd[j] * s.joint_velocities[j];
+            let (q, qd) = match self.motor_feedback[j] {
+                Some(ratio) => (s.motor_positions[j] / ratio, s.motor_velocities[j] / ratio),
+                None => (s.joint_positions[j], s.joint_velocities[j]),
+            };
+            let tau = self.kp[j] * (self.target[j] - q) - self.kd[j] * qd;
             c.values[j] = tau * self.scale[j];
         }
         c.mode = self.mode;

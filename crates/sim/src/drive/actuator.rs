@@ -166,15 +166,12 @@ impl Actuator {
                     qv[k] = q[q_in[k]];
                 }
                 let m = mechanism.motion(&qv[..n], &[0.0; MAX_COUPLED][..n])?;
-                let mut row = MotorRow {
+                let coef = std::array::from_fn(|k| if k < n { m.jacobian[k][2] } else { 0.0 });
+                Some(MotorRow {
+                    idx: v_in,
+                    coef,
                     len: n,
-                    ..MotorRow::default()
-                };
-                for k in 0..n {
-                    row.idx[k] = v_in[k];
-                    row.coef[k] = m.jacobian[k][2];
-                }
-                Some(row)
+                })
             }
         })
     }

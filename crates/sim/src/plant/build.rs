@@ -11,7 +11,7 @@
 
 use super::{Plant, PlantConfig};
 use crate::contact::{sole_rectangle, FootSpec};
-use crate::drive::{Actuator, FrictionParams, MotorParams, Transmission};
+use crate::drive::{Actuator, Transmission};
 use crate::error::SimError;
 use biped_dynamics::model::Mechanism;
 use biped_dynamics::urdf::{self, UrdfOptions};
@@ -52,6 +52,7 @@ pub fn lola_plant(variant: LolaType, config: PlantConfig) -> Result<LolaPlant, S
         };
         actuators.push(actuator(
             m,
+            &config,
             l.name.clone(),
             l.q_index,
             l.v_index,
@@ -73,9 +74,11 @@ fn unknown(kind: &'static str, name: &str) -> SimError {
     }
 }
 
-/// An actuator with default motor and friction; nominal ratio from the motor row at neutral.
+/// An actuator with the configured motor and friction; nominal ratio from the motor row at
+/// neutral.
 fn actuator(
     m: &Model,
+    c: &PlantConfig,
     name: String,
     q: usize,
     v: usize,
@@ -86,8 +89,8 @@ fn actuator(
         joint_q: q,
         joint_v: v,
         transmission: t,
-        motor: MotorParams::default(),
-        friction: FrictionParams::default(),
+        motor: c.motor,
+        friction: c.friction,
         nominal_ratio: 1.0,
     };
     let q0 = m.neutral();
@@ -99,7 +102,7 @@ fn actuator(
             .map_or(1.0, |(_, c)| c.abs()),
         (_, None) => 1.0,
     };
-    if !(a.nominal_ratio > 0.0) {
+    if a.nominal_ratio.is_nan() || a.nominal_ratio <= 0.0 {
         a.nominal_ratio = 1.0;
     }
     Ok(a)
@@ -214,6 +217,7 @@ pub fn urdf_plant(path: &Path, feet: &UrdfFeet, config: PlantConfig) -> Result<P
             };
             actuators.push(actuator(
                 m,
+                &config,
                 b.joint_name().to_string(),
                 b.q_index(),
                 b.v_index(),

@@ -19,7 +19,7 @@ pub use layout::StateLayout;
 use crate::contact::{ContactOutput, ContactParams, ContactSet, FootSpec};
 use crate::controller::Commands;
 use crate::drive::actuator::{DriveState, MotorRow};
-use crate::drive::{Actuator, DriveMode};
+use crate::drive::{Actuator, DriveMode, FrictionParams, MotorParams};
 use crate::error::{finite, SimError};
 use crate::ode::{OdeSystem, SplitSystem};
 use biped_dynamics::{forward_dynamics, Algorithm, Data, Model, Wrench};
@@ -37,8 +37,14 @@ pub struct PlantConfig {
     pub contact: ContactParams,
     /// Elastic gear stiffness of Type 3 \[N m/rad] (link side).
     pub gear_stiffness: f64,
-    /// Elastic gear damping of Type 3 \[N m s/rad] (link side).
-    pub gear_damping: f64,
+    /// Damping ratio `zeta` of each Type 3 gear: `d = 2 zeta sqrt(k J)` with the two-mass
+    /// reduced inertia `J = J_link N^2 J_motor / (J_link + N^2 J_motor)` at the neutral pose
+    /// (one value for gears on links from 0.2 kg toes to the 11 kg torso).
+    pub gear_damping_ratio: f64,
+    /// Motor constants given to every actuator by the robot builders.
+    pub motor: MotorParams,
+    /// Motor-side friction given to every actuator by the robot builders.
+    pub friction: FrictionParams,
     /// Forward-dynamics algorithm (O(n) by default).
     #[serde(skip, default = "default_algorithm")]
     pub algorithm: Algorithm,
@@ -49,16 +55,36 @@ fn default_algorithm() -> Algorithm {
 }
 
 impl Default for PlantConfig {
-    /// Torque mode, default contact, Type 3 gears of 2e4 N m/rad and 20 N m s/rad.
+    /// Torque mode, default contact, Type 3 gears of 2e4 N m/rad with 5 % damping.
+    ///
+    /// Stiffness note: on Lola's toe (link inertia ~2.5e-4 kg m^2) a 2e4 N m/rad gear has
+    /// `omega = sqrt(k / J) ~ 9000 rad/s`, so Type 3 needs RK4 steps of <= 0.25 ms; Type 2
+    /// (rigid gears) runs at the 1 ms control period.
     fn default() -> Self {
         Self {
             mode: DriveMode::Torque,
             contact: ContactParams::default(),
             gear_stiffness: 2.0e4,
-            gear_damping: 20.0,
+            gear_damping_ratio: 0.05,
+            motor: MotorParams::default(),
+            friction: FrictionParams::default(),
             algorithm: Algorithm::On,
         }
     }
+}
+
+/// Inertias seen by one actuator \[kg m^2 or kg], for gain scheduling.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ActuatorInertia {
+    /// Mass-matrix diagonal at the joint coordinate: the subtree plus reflected rotor inertia
+    /// (Type 3: plus `N^2` times the motor's diagonal).
+    pub sub: f64,
+    /// Rigid inertia of all other bodies about the joint axis if the subtree holds a foot
+    /// (what a stance joint moves, e.g. an ankle carrying the body), else 0.
+    pub rest: f64,
+    /// Inertia the actuator drives directly when the subtree is free: `sub` for rigid drives,
+    /// the reflected motor inertia `N^2 J_m` for elastic gears.
+    pub free: f64,
 }
 
 /// Everything the plant computes besides `zdot` at one state (overwritten by every call).
@@ -79,6 +105,8 @@ pub struct Plant {
     layout: StateLayout,
     actuators: Vec<Actuator>,
     gears: Vec<ElasticGear>,
+    /// Damper of each gear \[N m s/rad] (link side).
+    gear_damping: Vec<f64>,
     contact: ContactSet,
     qdot: QdotMap,
     commands: Vec<f64>,
@@ -104,7 +132,11 @@ impl Plant {
         for a in &actuators {
             a.motor.validate()?;
             a.friction.validate()?;
-            if a.joint_q >= model.nq() || a.joint_v >= model.nv() || !(a.nominal_ratio > 0.0) {
+            if a.joint_q >= model.nq()
+                || a.joint_v >= model.nv()
+                || a.nominal_ratio.is_nan()
+                || a.nominal_ratio <= 0.0
+            {
                 return Err(SimError::InvalidParameter {
                     what: format!("actuator `{}`", a.name),
                     reason: "joint index out of range or nominal ratio <= 0".into(),
@@ -112,7 +144,7 @@ impl Plant {
             }
         }
         crate::error::positive("gear_stiffness", config.gear_stiffness, true)?;
-        crate::error::positive("gear_damping", config.gear_damping, true)?;
+        crate::error::positive("gear_damping_ratio", config.gear_damping_ratio, true)?;
         let contact = ContactSet::new(&model, config.contact, feet)?;
         let ncurrent = if config.mode == DriveMode::Voltage {
             actuators.len()
@@ -129,8 +161,11 @@ impl Plant {
             contact: contact.output(),
             drives: vec![DriveState::default(); actuators.len()],
         };
+        let mut data = Data::new(&model);
+        let gear_damping = gear_dampers(&model, &mut data, &gears, &config)?;
         Ok(Self {
-            data: Data::new(&model),
+            data,
+            gear_damping,
             qdot: QdotMap::new(&model),
             q: model.neutral(),
             v: DVector::zeros(model.nv()),
@@ -259,20 +294,27 @@ impl Plant {
         self.qdot.floating_base()
     }
 
-    /// Inertia seen by each actuator at `q`, `(m_sub, m_rest)`: the mass-matrix diagonal at the
-    /// joint coordinate (its subtree plus reflected rotor inertia; for Type 3 plus `N^2` times
-    /// the motor's diagonal) and the rigid inertia of all other bodies about the joint axis
-    /// (what the joint moves when its subtree is held by the ground, e.g. a stance ankle moving
-    /// the body; 0 for joints without a foot in their subtree).
-    pub fn actuator_inertias(&mut self, q: &DVector<f64>) -> Result<Vec<(f64, f64)>, SimError> {
+    /// Inertias seen by each actuator at `q` (see [`ActuatorInertia`]).
+    pub fn actuator_inertias(
+        &mut self,
+        q: &DVector<f64>,
+    ) -> Result<Vec<ActuatorInertia>, SimError> {
         let m = biped_dynamics::mass_matrix(&self.model, &mut self.data, q)?.clone();
         let mut out = Vec::with_capacity(self.actuators.len());
         for a in &self.actuators {
-            let mut sub = m[(a.joint_v, a.joint_v)];
-            if let crate::drive::Transmission::Elastic { motor_v, ratio, .. } = a.transmission {
-                sub += ratio * ratio * m[(motor_v, motor_v)];
-            }
-            out.push((sub, self.rest_inertia(a.joint_v)));
+            let link = m[(a.joint_v, a.joint_v)];
+            let (sub, free) = match a.transmission {
+                crate::drive::Transmission::Elastic { motor_v, ratio, .. } => {
+                    let motor = ratio * ratio * m[(motor_v, motor_v)];
+                    (link + motor, motor)
+                }
+                _ => (link, link),
+            };
+            out.push(ActuatorInertia {
+                sub,
+                rest: self.rest_inertia(a.joint_v),
+                free,
+            });
         }
         Ok(out)
     }
@@ -374,8 +416,8 @@ impl Plant {
             }
             self.out.drives[k] = ds;
         }
-        let (k, d) = (self.config.gear_stiffness, self.config.gear_damping);
-        for g in &self.gears {
+        let k = self.config.gear_stiffness;
+        for (g, &d) in self.gears.iter().zip(&self.gear_damping) {
             let torque = k * (q[g.motor_q] / g.ratio - q[g.link_q])
                 + d * (v[g.motor_v] / g.ratio - v[g.link_v]);
             tau[g.link_v] += torque;
@@ -404,6 +446,30 @@ impl Plant {
         self.qdot.qdot(&z[l.q()], &z[l.v()], &mut zdot[l.q()]);
         Ok(())
     }
+}
+
+/// Gear dampers `2 zeta sqrt(k J)` with the reduced inertia of link and motor at neutral.
+fn gear_dampers(
+    model: &Model,
+    data: &mut Data,
+    gears: &[ElasticGear],
+    c: &PlantConfig,
+) -> Result<Vec<f64>, SimError> {
+    if gears.is_empty() {
+        return Ok(Vec::new());
+    }
+    let m = biped_dynamics::mass_matrix(model, data, &model.neutral())?;
+    Ok(gears
+        .iter()
+        .map(|g| {
+            let (jl, jm) = (
+                m[(g.link_v, g.link_v)],
+                g.ratio * g.ratio * m[(g.motor_v, g.motor_v)],
+            );
+            let j = jl * jm / (jl + jm);
+            2.0 * c.gear_damping_ratio * (c.gear_stiffness * j).sqrt()
+        })
+        .collect())
 }
 
 impl OdeSystem for Plant {

@@ -16,7 +16,7 @@ pub use pose::{lola_pose, lola_sway_joints, SwayJoints};
 
 use crate::controller::{Controller, JointPd};
 use crate::error::SimError;
-use crate::ode::Method;
+use crate::ode::{Method, Settings};
 use crate::plant::Plant;
 use crate::simulation::{Frame, Simulation, Summary};
 use nalgebra::DVector;
@@ -50,7 +50,7 @@ impl std::str::FromStr for ScenarioKind {
 pub struct ScenarioOptions {
     /// Control period \[s] (default 1 ms).
     pub period: f64,
-    /// Duration \[s] (default: drop 2, stand 2, sway 2 sway periods + 1 s).
+    /// Duration \[s] (default: drop 2, stand 3, sway 2 sway periods + 1 s).
     pub duration: Option<f64>,
     /// PD bandwidth `w` \[rad/s] of [`JointPd::scaled`] (default 40).
     pub bandwidth: f64,
@@ -131,7 +131,7 @@ pub fn build(
     let base = pose::base_height(plant, &q0);
     let (duration, criteria) = match kind {
         ScenarioKind::Drop => (2.0, Criteria::drop(base)),
-        ScenarioKind::Stand => (2.0, Criteria::stand(base)),
+        ScenarioKind::Stand => (3.0, Criteria::stand(base)),
         ScenarioKind::Sway => {
             let joints = o
                 .sway_joints
@@ -208,8 +208,21 @@ impl Scenario {
         method: Method,
         observer: &mut dyn FnMut(&Frame) -> Result<(), SimError>,
     ) -> Result<(Summary, Simulation<JointPd>), SimError> {
+        let settings = Settings::fixed(self.controller.period());
+        self.run_with(plant, method, settings, observer)
+    }
+
+    /// Like [`Self::run`] with explicit integrator settings (e.g. `h` = 0.1 ms for Type 3,
+    /// whose stiff elastic gears need steps below the control period).
+    pub fn run_with(
+        self,
+        plant: Plant,
+        method: Method,
+        settings: Settings,
+        observer: &mut dyn FnMut(&Frame) -> Result<(), SimError>,
+    ) -> Result<(Summary, Simulation<JointPd>), SimError> {
         let base = plant.floating_base();
-        let mut sim = Simulation::new(plant, self.controller, method, self.z0)?;
+        let mut sim = Simulation::with_settings(plant, self.controller, method, settings, self.z0)?;
         let mut tracker = Tracker::new(base.map(|(qi, _)| qi));
         let mut obs = |f: &Frame| {
             tracker.observe(f);

@@ -47,7 +47,8 @@ fn joint_body(plant: &Plant, joint: &str) -> Result<BodyId, SimError> {
         })
 }
 
-/// Neutral configuration with the named one-DoF joint angles set.
+/// Neutral configuration with the named one-DoF joint angles set and Type 3 motors at
+/// `N q_link` (unloaded gears).
 pub(super) fn configuration(
     plant: &Plant,
     pose: &[(String, f64)],
@@ -63,6 +64,9 @@ pub(super) fn configuration(
             });
         }
         q[body.q_index()] = *angle;
+    }
+    for g in plant.gears() {
+        q[g.motor_q] = g.ratio * q[g.link_q];
     }
     Ok(q)
 }

@@ -9,11 +9,14 @@ use crate::plant::Plant;
 use biped_dynamics::{Centroidal, Data, Model};
 use nalgebra::DVector;
 
+/// Own model copy, workspaces and `(q, v)` buffers for the centroidal momentum.
+type MomentumWork = (Model, Data, Centroidal, DVector<f64>, DVector<f64>);
+
 /// Signal names and a reusable value buffer (own kinematics workspace for `L_G`).
 pub struct Signals {
     names: Vec<String>,
     values: Vec<f64>,
-    momentum: Option<(Model, Data, Centroidal, DVector<f64>, DVector<f64>)>,
+    momentum: Option<MomentumWork>,
 }
 
 impl Signals {

@@ -55,12 +55,22 @@ pub struct Summary {
     pub max_contact_force: f64,
     /// Total vertical contact force at the end \[N].
     pub final_contact_force: f64,
-    /// Largest `|v_i|` at the end (all velocity coordinates).
+    /// Largest `|v_i|` at the end over the link coordinates (base and joints; Type 3 motor
+    /// coordinates, which turn `N` times faster, excluded).
     pub final_max_speed: f64,
     /// Largest joint speed of the actuated joints at the end \[rad/s].
     pub final_max_joint_speed: f64,
     /// Pass criteria (filled by a scenario).
     pub checks: Vec<Check>,
+}
+
+/// Largest `|v_i|` over the non-motor coordinates.
+fn link_speed(plant: &crate::plant::Plant, v: &[f64]) -> f64 {
+    let motor = |i: usize| plant.gears().iter().any(|g| g.motor_v == i);
+    v.iter()
+        .enumerate()
+        .filter(|(i, _)| !motor(*i))
+        .fold(0.0f64, |m, (_, x)| m.max(x.abs()))
 }
 
 impl Summary {
@@ -108,7 +118,7 @@ impl Summary {
                 .iter()
                 .map(|f| f.force.z)
                 .sum(),
-            final_max_speed: abs_max(&sim.z[l.v()]),
+            final_max_speed: link_speed(plant, &sim.z[l.v()]),
             final_max_joint_speed: abs_max(&sim.sensors.joint_velocities),
             checks: Vec::new(),
         }

@@ -1,0 +1,83 @@
+//! Small models shared by the simulation tests.
+#![allow(dead_code)]
+
+use biped_dynamics::{BodySpec, JointModel, Model, ModelBuilder, RigidInertia};
+use biped_sim::controller::JointPd;
+use biped_sim::ode::{Integrator, Method, Settings};
+use biped_sim::plant::Plant;
+use nalgebra::{Isometry3, Matrix3, Vector3};
+
+/// Inertia of a solid box of mass `m` and edge lengths `s`, centred at the origin.
+pub fn box_inertia(m: f64, s: [f64; 3]) -> RigidInertia {
+    let [a, b, c] = s.map(|x| x * x);
+    let d = Vector3::new(b + c, a + c, a + b) * (m / 12.0);
+    RigidInertia::new(m, Vector3::zeros(), Matrix3::from_diagonal(&d)).unwrap()
+}
+
+/// One free box body named "box".
+pub fn free_box(m: f64, s: [f64; 3]) -> Model {
+    let mut b = ModelBuilder::new();
+    b.add_body(BodySpec {
+        name: "box".into(),
+        joint_name: "root".into(),
+        parent: None,
+        joint: JointModel::FreeQuaternion,
+        placement: Isometry3::identity(),
+        inertia: box_inertia(m, s),
+    })
+    .unwrap();
+    b.build().unwrap()
+}
+
+/// A chain of `n` revolute links (axis y, 0.3 m long rods hanging along -z) on the world.
+pub fn pendulum(n: usize) -> Model {
+    let mut b = ModelBuilder::new();
+    let mut parent = None;
+    for i in 0..n {
+        let z = if i == 0 { 0.0 } else { -0.3 };
+        let mut inertia = box_inertia(1.0, [0.03, 0.03, 0.3]);
+        inertia = RigidInertia::new(
+            1.0,
+            Vector3::new(0.0, 0.0, -0.15),
+            inertia.inertia_about_com(),
+        )
+        .unwrap();
+        let id = b
+            .add_body(BodySpec {
+                name: format!("link{i}"),
+                joint_name: format!("joint{i}"),
+                parent,
+                joint: JointModel::Revolute {
+                    axis: Vector3::y_axis(),
+                },
+                placement: Isometry3::translation(0.0, 0.0, z),
+                inertia,
+            })
+            .unwrap();
+        parent = Some(id);
+    }
+    b.build().unwrap()
+}
+
+/// A PD controller without actuators (passive plants).
+pub fn passive(period: f64) -> JointPd {
+    JointPd::new(period, vec![], vec![], vec![]).unwrap()
+}
+
+/// Integrates the plant with held commands from `t0` for `n` steps of `h`, calling `each`
+/// after every step.
+pub fn integrate(
+    plant: &mut Plant,
+    method: Method,
+    h: f64,
+    z: &mut [f64],
+    n: usize,
+    mut each: impl FnMut(f64, &[f64], &mut Plant),
+) {
+    let mut integ = Integrator::new(method, z.len(), Settings::fixed(h)).unwrap();
+    for k in 0..n {
+        let (t0, t1) = (k as f64 * h, (k + 1) as f64 * h);
+        integ.advance_split(plant, t0, t1, z).unwrap();
+        each(t1, z, plant);
+    }
+}
