@@ -19,3 +19,5 @@ pub mod sensors;
 pub mod simulation;
 
 pub use error::SimError;
+pub use ode::{IntegrateError, Integrator, Method, OdeSystem, Settings, SplitSystem, StepStats};
+pub use record::{RecordError, Recorder};
