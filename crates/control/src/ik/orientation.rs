@@ -7,6 +7,11 @@
 //! for a small rotation `A_d = exp([dx]x) A` the error is `dx` and the closed loop (C.11)
 //! drives `omega = K dx` straight at the target. `log` is taken through nalgebra's rotation
 //! logarithm (angle in `[0, pi]`); at `gamma = pi` the axis sign is arbitrary (either is valid).
+//!
+//! Typo resolved: (C.6) as printed contains `psi`, so it cannot invert `T(phi, theta)` of
+//! (C.5); it resembles the inverse for the body-frame `A^T omega` with the rows reversed and
+//! `omega_y` negated. [`euler_zxz_rates`] therefore inverts (C.5) itself
+//! (tests/ik_orientation.rs derives and checks the body-frame inverse).
 
 use nalgebra::{Matrix3, Rotation3, Vector3};
 
