@@ -1,8 +1,10 @@
 //! Whole walking patterns: ZMP from the CoM, support polygon, rest at start and end,
 //! feet and torso kinematics against finite differences.
 
-use biped_control::pattern::footsteps::Pose2;
-use biped_control::pattern::{Foot, PatternParams, PatternSample, Phase, WalkingPattern};
+use biped_control::pattern::footsteps::{foot_corners, Pose2};
+use biped_control::pattern::{
+    Foot, FootGeometry, PatternParams, PatternSample, Phase, WalkingPattern,
+};
 use nalgebra::{Vector2, Vector3};
 
 fn walks() -> Vec<(&'static str, PatternParams)> {
@@ -38,12 +40,46 @@ fn walks() -> Vec<(&'static str, PatternParams)> {
     ]
 }
 
+/// Signed distance of `p` inside the convex hull of `pts` (negative outside): the minimum over
+/// hull edges (pairs with every point on one side) of the distance to the edge line.
+fn hull_margin(pts: &[Vector2<f64>], p: &Vector2<f64>) -> f64 {
+    let mut margin = f64::INFINITY;
+    for i in 0..pts.len() {
+        for j in 0..pts.len() {
+            let e = pts[j] - pts[i];
+            if e.norm() < 1e-12 {
+                continue;
+            }
+            let n = Vector2::new(e.y, -e.x).normalize();
+            if pts.iter().all(|q| n.dot(&(q - pts[i])) <= 1e-12) {
+                margin = margin.min(-n.dot(&(p - pts[i])));
+            }
+        }
+    }
+    margin
+}
+
+/// Corners of both foot rectangles of a sample.
+fn support_corners(s: &PatternSample, foot: &FootGeometry) -> Vec<Vector2<f64>> {
+    let mut pts = Vec::new();
+    for f in [Foot::Left, Foot::Right] {
+        let t = s.foot(f).pose.translation;
+        let sole = Pose2 {
+            x: t.x,
+            y: t.y,
+            yaw: yaw_of(s, f),
+        };
+        pts.extend(foot_corners(&sole, foot).iter().map(|c| c.coords));
+    }
+    pts
+}
+
 fn yaw_of(s: &PatternSample, foot: Foot) -> f64 {
     s.foot(foot).pose.rotation.euler_angles().2
 }
 
 #[test]
-fn zmp_from_com_finite_differences_tracks_reference_inside_the_stance_foot() {
+fn zmp_from_com_finite_differences_tracks_reference_inside_the_support_polygon() {
     for (name, p) in walks() {
         let w = WalkingPattern::generate(&p).unwrap();
         let s = w.samples();
@@ -70,6 +106,12 @@ fn zmp_from_com_finite_differences_tracks_reference_inside_the_stance_foot() {
                     p.foot.half_width - local.y.abs(),
                 ];
                 min_margin = min_margin.min(m.iter().cloned().fold(f64::INFINITY, f64::min));
+            } else {
+                let hull = hull_margin(&support_corners(&s[k], &p.foot), &zmp);
+                assert!(
+                    hull > 0.0,
+                    "{name} k {k}: ZMP outside the double-support polygon"
+                );
             }
         }
         assert!(
@@ -209,4 +251,14 @@ fn phases_alternate_and_last_stance_is_side_by_side() {
     assert!((d - Vector3::new(0.0, p.step_width, 0.0)).norm() < 1e-12);
     let zmp_end: Vector2<f64> = last.zmp_ref;
     assert!((zmp_end - Vector2::new((p.n_steps - 1) as f64 * p.step_length, 0.0)).norm() < 1e-12);
+}
+
+#[test]
+fn hull_margin_of_a_square_with_an_inner_point() {
+    let sq: Vec<Vector2<f64>> = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (0.5, 0.5)]
+        .iter()
+        .map(|&(x, y)| Vector2::new(x, y))
+        .collect();
+    assert!((hull_margin(&sq, &Vector2::new(0.5, 0.25)) - 0.25).abs() < 1e-12);
+    assert!((hull_margin(&sq, &Vector2::new(1.5, 0.5)) + 0.5).abs() < 1e-12);
 }

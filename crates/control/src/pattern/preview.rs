@@ -117,19 +117,39 @@ impl PreviewController {
     pub fn track(&self, reference: &[f64], x0: &Vector3<f64>, out: &mut Vec<Vector3<f64>>) {
         out.clear();
         let n = reference.len();
+        // Reference increments dr_i = r_i - r_{i-1}; zero beyond the end (reference held).
+        let mut dr = Vec::with_capacity(n);
+        dr.push(0.0);
+        dr.extend(reference.windows(2).map(|w| w[1] - w[0]));
         let (mut x, mut x_prev, mut u) = (*x0, *x0, 0.0);
         for k in 0..n {
             out.push(x);
             let e = (self.c * x)[0] - reference[k];
             let dx = x - x_prev;
-            let mut du = -self.gain[0] * e - (self.gain.fixed_columns::<3>(1) * dx)[0];
-            let last = (k + self.preview.len()).min(n - 1);
-            for (f, w) in self.preview.iter().zip(reference[k..=last].windows(2)) {
-                du += f * (w[1] - w[0]);
-            }
-            u += du;
+            let feedback = self.gain[0] * e + (self.gain.fixed_columns::<3>(1) * dx)[0];
+            let future = &dr[(k + 1).min(n)..];
+            let m = future.len().min(self.preview.len());
+            u += dot(&self.preview[..m], &future[..m]) - feedback;
             x_prev = x;
             x = self.a * x + self.b * u;
         }
     }
+}
+
+/// Dot product with four independent accumulators (lets the compiler vectorise).
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let mut acc = [0.0; 4];
+    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
+    let tail: f64 = ca
+        .remainder()
+        .iter()
+        .zip(cb.remainder())
+        .map(|(x, y)| x * y)
+        .sum();
+    for (x, y) in ca.zip(cb) {
+        for i in 0..4 {
+            acc[i] += x[i] * y[i];
+        }
+    }
+    acc.iter().sum::<f64>() + tail
 }
