@@ -109,7 +109,7 @@ fn unreachable_foot_target_is_reported() {
     );
     let r = ik.optimize(&mut tasks, &mut q).unwrap();
     assert!(!r.reached());
-    assert!(r.clone().require_reached().is_err());
+    assert!(r.require_reached().is_err());
     assert!(q.iter().all(|x| x.is_finite()));
 }
 

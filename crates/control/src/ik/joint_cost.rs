@@ -62,7 +62,8 @@ impl JointCost {
         }
         for j in &joints {
             let ok = j.lower.is_finite() && j.upper.is_finite() && j.upper > j.lower;
-            if !ok || !(j.comfort.is_finite() && j.w_comfort >= 0.0 && j.w_comfort.is_finite()) {
+            let weight_ok = j.comfort.is_finite() && j.w_comfort >= 0.0 && j.w_comfort.is_finite();
+            if !(ok && weight_ok) {
                 return Err(IkError::InvalidParameter {
                     name: "joint cost entry",
                     reason: "need finite lower < upper, finite comfort, w_comfort >= 0",

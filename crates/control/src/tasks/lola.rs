@@ -8,6 +8,7 @@
 //!   `J = A_t^T (J_w,foot - J_w,torso)` (since `dR_rel/dt = [A_t^T (w_f - w_t)]x R_rel`);
 //! - upper body: error `log(A_d A_t^T)`, `J = J_w,torso`; CoG: `J = J_C`;
 //! - joint tasks: `J = e_i^T`.
+//!
 //! The foot TCP is the origin of the `*_sole` marker body; an arm CoG is the CoG of the
 //! subtree of its `*_shoulder` body (links and the rotors mounted in the arm).
 //! Inactive tasks (activation weight 0) are left out of the stack; blended tasks get the
@@ -169,11 +170,11 @@ impl LolaTasks {
             .map_err(kin)?;
         let pose = |b: usize| self.data.world_rot[b];
         let mut arm_cog = [Vector3::zeros(); 2];
-        for s in 0..2 {
-            for &(b, com, mass) in &self.arms[s] {
-                arm_cog[s] += (self.data.world_pos[b] + self.data.world_rot[b] * com) * mass;
+        for ((cog, arm), mass) in arm_cog.iter_mut().zip(&self.arms).zip(self.arm_mass) {
+            for &(b, com, m) in arm {
+                *cog += (self.data.world_pos[b] + self.data.world_rot[b] * com) * m;
             }
-            arm_cog[s] /= self.arm_mass[s];
+            *cog /= mass;
         }
         Ok(Measured {
             cog: self.cen.com(),
