@@ -17,12 +17,13 @@ mod error;
 mod fixed;
 mod integrator;
 mod settings;
+mod tableau;
 mod work;
 
-pub use dopri5::{Tableau, TABLEAU};
 pub use error::{ConfigError, IntegrateError, Quantity};
 pub use integrator::Integrator;
 pub use settings::{Method, ParseMethodError, Settings, StepStats};
+pub use tableau::{Tableau, TABLEAU};
 
 /// A first-order ODE `zdot = f(t, z)` with a state of fixed dimension (2.2).
 pub trait OdeSystem {
