@@ -275,3 +275,37 @@ fn methods_parse_and_print() {
     assert_eq!(" RK4 ".parse::<Method>(), Ok(Method::Rk4));
     assert!("rk45".parse::<Method>().is_err());
 }
+
+#[test]
+fn overflowing_state_is_reported_and_the_last_good_state_kept() {
+    /// `y' = f64::MAX`: one step from `y = 0.999 f64::MAX` overflows to infinity.
+    struct Huge;
+    impl biped_sim::ode::OdeSystem for Huge {
+        type Error = std::convert::Infallible;
+        fn dim(&self) -> usize {
+            2
+        }
+        fn rhs(&mut self, _t: f64, _z: &[f64], zd: &mut [f64]) -> Result<(), Self::Error> {
+            zd[0] = f64::MAX;
+            zd[1] = 0.0;
+            Ok(())
+        }
+    }
+    for method in [Method::Euler, Method::Rk4, Method::Dopri5] {
+        let mut z = [0.999 * f64::MAX, 1.0];
+        let e = integ(method)
+            .advance(&mut Huge, 0.0, 1.0, &mut z)
+            .expect_err("overflow");
+        assert!(
+            matches!(
+                e,
+                IntegrateError::NonFinite { .. } | IntegrateError::StepSizeUnderflow { .. }
+            ),
+            "{method}: {e}"
+        );
+        assert!(
+            z.iter().all(|v| v.is_finite()),
+            "{method} keeps a finite state: {z:?}"
+        );
+    }
+}

@@ -4,10 +4,11 @@
 //! within `1e-9` of an integer counts as that integer), so the last sub-step ends exactly at
 //! `t1`. Dense output of these methods is the sub-step grid: a requested time `t` is answered
 //! with the state at the first grid time `>= t`, and the sink receives that grid time.
+//! On an error the state is restored to the start of the failed sub-step.
 
 use super::error::{IntegrateError, Quantity};
 use super::settings::{Method, StepStats};
-use super::work::{eval, finite, project, Outputs, Split, Work};
+use super::work::{eval, finite, Outputs, Split, Work};
 use super::OdeSystem;
 
 /// Number of equal sub-steps of length `<= h` covering `span > 0`, or `None` if absurdly many.
@@ -57,17 +58,20 @@ pub(crate) fn advance<S: OdeSystem, F: FnMut(f64, &[f64])>(
             t0 + (i + 1) as f64 * hs
         };
         let h = t_next - t;
-        match kind {
-            Fixed::Euler => euler(w, sys, t, h, z, &mut stats)?,
-            Fixed::Rk4 => rk4(w, sys, t, h, z, &mut stats)?,
-            Fixed::Symplectic => match split {
-                Some((np, rate)) => symplectic(w, sys, np, rate, t, h, z, &mut stats)?,
-                None => return Err(IntegrateError::SplitRequired(Method::Symplectic)),
-            },
-        }
-        finite(z, t_next, Quantity::State)?;
         w.next.copy_from_slice(z);
-        project(sys, z, &w.next);
+        let step = match kind {
+            Fixed::Euler => euler(w, sys, t, h, z, &mut stats),
+            Fixed::Rk4 => rk4(w, sys, t, h, z, &mut stats),
+            Fixed::Symplectic => match split {
+                Some((np, rate)) => symplectic(w, sys, np, rate, t, h, z, &mut stats),
+                None => Err(IntegrateError::SplitRequired(Method::Symplectic)),
+            },
+        };
+        if let Err(e) = step.and_then(|_| finite(z, t_next, Quantity::State)) {
+            z.copy_from_slice(&w.next);
+            return Err(e);
+        }
+        sys.project(z);
         stats.steps += 1;
         while out.due(t_next).is_some() {
             (out.sink)(t_next, z);
