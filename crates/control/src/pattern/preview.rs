@@ -121,19 +121,48 @@ impl PreviewController {
         let mut dr = Vec::with_capacity(n);
         dr.push(0.0);
         dr.extend(reference.windows(2).map(|w| w[1] - w[0]));
+        let runs = nonzero_runs(&dr);
         let (mut x, mut x_prev, mut u) = (*x0, *x0, 0.0);
-        for k in 0..n {
+        for (k, r_k) in reference.iter().enumerate() {
             out.push(x);
-            let e = (self.c * x)[0] - reference[k];
+            let e = (self.c * x)[0] - r_k;
             let dx = x - x_prev;
             let feedback = self.gain[0] * e + (self.gain.fixed_columns::<3>(1) * dx)[0];
-            let future = &dr[(k + 1).min(n)..];
-            let m = future.len().min(self.preview.len());
-            u += dot(&self.preview[..m], &future[..m]) - feedback;
+            // sum_j f_j dr_{k+j} over the preview window [k + 1, k + N], nonzero runs only.
+            let (lo, hi) = (k + 1, (k + self.preview.len()).min(n - 1) + 1);
+            let mut future = 0.0;
+            for &(a, b) in runs.iter().skip_while(|r| r.1 <= lo) {
+                if a >= hi {
+                    break;
+                }
+                let (a, b) = (a.max(lo), b.min(hi));
+                future += dot(&self.preview[a - lo..b - lo], &dr[a..b]);
+            }
+            u += future - feedback;
             x_prev = x;
             x = self.a * x + self.b * u;
         }
     }
+}
+
+/// Maximal index ranges `[a, b)` of nonzero entries.
+fn nonzero_runs(v: &[f64]) -> Vec<(usize, usize)> {
+    let mut runs = Vec::new();
+    let mut start = None;
+    for (i, &x) in v.iter().enumerate() {
+        match (x != 0.0, start) {
+            (true, None) => start = Some(i),
+            (false, Some(a)) => {
+                runs.push((a, i));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(a) = start {
+        runs.push((a, v.len()));
+    }
+    runs
 }
 
 /// Dot product with four independent accumulators (lets the compiler vectorise).
