@@ -6,6 +6,7 @@
 use super::Frame;
 use crate::error::SimError;
 use crate::plant::Plant;
+use crate::record::{Recorder, SignalId};
 use biped_dynamics::{Centroidal, Data, Model};
 use nalgebra::DVector;
 
@@ -15,6 +16,7 @@ type MomentumWork = (Model, Data, Centroidal, DVector<f64>, DVector<f64>);
 /// Signal names and a reusable value buffer (own kinematics workspace for `L_G`).
 pub struct Signals {
     names: Vec<String>,
+    ids: Vec<SignalId>,
     values: Vec<f64>,
     momentum: Option<MomentumWork>,
 }
@@ -46,6 +48,7 @@ impl Signals {
         let values = Vec::with_capacity(names.len());
         Self {
             names,
+            ids: Vec::new(),
             values,
             momentum,
         }
@@ -80,5 +83,22 @@ impl Signals {
             v.extend_from_slice(&[com.x, com.y, com.z, h.ang.x, h.ang.y, h.ang.z]);
         }
         Ok(&self.values)
+    }
+
+    /// Appends one row at `frame.t` to `rec` with every signal (registered as scalar columns
+    /// on the first call; later calls only write by id).
+    pub fn record(&mut self, frame: &Frame, rec: &mut Recorder) -> Result<(), SimError> {
+        let out = |e: crate::record::RecordError| SimError::Output(e.to_string());
+        if self.ids.is_empty() {
+            for n in &self.names {
+                self.ids.push(rec.register(n).map_err(out)?);
+            }
+        }
+        rec.sample(frame.t).map_err(out)?;
+        self.values(frame)?;
+        for (id, v) in self.ids.iter().zip(&self.values) {
+            rec.set_id(*id, std::slice::from_ref(v)).map_err(out)?;
+        }
+        Ok(())
     }
 }

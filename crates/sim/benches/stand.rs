@@ -1,0 +1,80 @@
+//! `stand` on Lola Type 2 with RK4 at the 1 kHz control period (issue item 9): wall time of
+//! 0.2 s simulated (real-time factor = 0.2 s / time), and the parts of one right-hand side:
+//! the whole rhs, the forward dynamics alone, and the contact layer alone.
+
+use biped_dynamics::{forward_dynamics, Algorithm, Data, Wrench};
+use biped_robots::lola::LolaType;
+use biped_sim::contact::ContactSet;
+use biped_sim::ode::{Method, OdeSystem};
+use biped_sim::plant::{lola_plant, Plant, PlantConfig};
+use biped_sim::scenario::{build, Scenario, ScenarioKind, ScenarioOptions};
+use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
+use nalgebra::DVector;
+use std::hint::black_box;
+
+const SIM_TIME: f64 = 0.2;
+
+fn setup() -> (Plant, Scenario) {
+    let mut lp = lola_plant(LolaType::Type2, PlantConfig::default()).unwrap();
+    let opts = ScenarioOptions {
+        duration: Some(SIM_TIME),
+        ..ScenarioOptions::lola()
+    };
+    let sc = build(ScenarioKind::Stand, &mut lp.plant, &opts).unwrap();
+    (lp.plant, sc)
+}
+
+fn stand(c: &mut Criterion) {
+    let mut g = c.benchmark_group("stand_lola_type2_rk4_1khz");
+    g.sample_size(10);
+    g.bench_function("0.2 s simulated", |b| {
+        b.iter_batched(
+            setup,
+            |(plant, sc)| black_box(sc.run(plant, Method::Rk4, &mut |_| Ok(())).unwrap().0),
+            BatchSize::LargeInput,
+        )
+    });
+    g.finish();
+
+    let (mut plant, sc) = setup();
+    let z = sc.z0.clone();
+    let mut zdot = vec![0.0; z.len()];
+    let mut g = c.benchmark_group("rhs_parts_lola_type2");
+    g.bench_function("plant rhs", |b| {
+        b.iter(|| plant.rhs(0.0, black_box(&z), &mut zdot).unwrap())
+    });
+    let l = plant.layout();
+    let (q, v) = (
+        DVector::from_column_slice(&z[l.q()]),
+        DVector::from_column_slice(&z[l.v()]),
+    );
+    let model = plant.model().clone();
+    let mut data = Data::new(&model);
+    let tau = DVector::zeros(model.nv());
+    let fext = vec![Wrench::zero(); model.nbodies()];
+    g.bench_function("forward dynamics O(n)", |b| {
+        b.iter(|| {
+            forward_dynamics(&model, &mut data, &q, &v, &tau, Some(&fext), Algorithm::On).unwrap();
+        })
+    });
+    let contact: ContactSet = plant.contact().clone();
+    let mut out = contact.output();
+    let mut fext = fext.clone();
+    let mut sdot = vec![0.0; l.ncontact];
+    g.bench_function("contact layer (16 points)", |b| {
+        b.iter(|| {
+            contact.evaluate(
+                q.as_slice(),
+                v.as_slice(),
+                &z[l.contact()],
+                &mut sdot,
+                &mut fext,
+                &mut out,
+            )
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, stand);
+criterion_main!(benches);
