@@ -74,6 +74,10 @@ pub(crate) enum Geom<'a> {
 }
 
 /// Result assembly of eq. (6.11): offsets the primitive points along the unit normal.
+///
+/// The hot path is one sqrt and one division. The rare |c*|^2 < `f64::MIN_POSITIVE` (or
+/// NaN) case is inlined as a cold branch without any call, so no value of the caller has
+/// to be spilled around a call that clobbers every vector register.
 #[inline(always)]
 pub(crate) fn assemble(c: Closest, ra: f64, rb: f64, ga: Geom, gb: Geom) -> DistanceResult {
     let cv = c.b - c.a;
@@ -82,6 +86,7 @@ pub(crate) fn assemble(c: Closest, ra: f64, rb: f64, ga: Geom, gb: Geom) -> Dist
         let len = d2.sqrt();
         (len, cv * (1.0 / len))
     } else {
+        std::hint::cold_path();
         tiny_normal(&cv, ga, gb)
     };
     DistanceResult {
@@ -97,8 +102,7 @@ pub(crate) fn assemble(c: Closest, ra: f64, rb: f64, ga: Geom, gb: Geom) -> Dist
 }
 
 /// |c*| and the normal when |c*|^2 underflows: c*/|c*| if c* != 0, else the geometric rule.
-#[cold]
-#[inline(never)]
+#[inline(always)]
 fn tiny_normal(cv: &Vector3<f64>, ga: Geom, gb: Geom) -> (f64, Vector3<f64>) {
     match scaled_unit(cv) {
         Some((len, n)) => (len, n),
@@ -107,6 +111,7 @@ fn tiny_normal(cv: &Vector3<f64>, ga: Geom, gb: Geom) -> (f64, Vector3<f64>) {
 }
 
 /// Length and direction of a non-zero vector, computed without under- or overflow.
+#[inline(always)]
 pub(crate) fn scaled_unit(v: &Vector3<f64>) -> Option<(f64, Vector3<f64>)> {
     let m = v.amax();
     if m > 0.0 && m.is_finite() {
@@ -148,6 +153,7 @@ pub(crate) fn edge_to_tri(i: usize, s: f64) -> (f64, f64) {
 
 /// Unit normal of a non-flat triangle, e0 x e1 normalised (computed as e0 x F', see
 /// [`TriFrame`]); `None` when flat.
+#[inline(always)]
 fn triangle_normal(f: &TriFrame) -> Option<Vector3<f64>> {
     if f.flat {
         None
@@ -157,6 +163,7 @@ fn triangle_normal(f: &TriFrame) -> Option<Vector3<f64>> {
 }
 
 /// Unit direction of the line a primitive reduces to (a flat triangle: its longest edge).
+#[inline(always)]
 fn line_direction(g: Geom) -> Option<Vector3<f64>> {
     let e = match g {
         Geom::Point => return None,
@@ -171,6 +178,7 @@ fn line_direction(g: Geom) -> Option<Vector3<f64>> {
 }
 
 /// unit(e x axis_k) with axis_k the coordinate axis of the smallest |e_k|.
+#[inline(always)]
 fn perpendicular(e: &Vector3<f64>) -> Vector3<f64> {
     let k = e.iamin();
     let axis = Vector3::ith(k, 1.0);
@@ -178,6 +186,7 @@ fn perpendicular(e: &Vector3<f64>) -> Vector3<f64> {
 }
 
 /// The normal rule for c* = 0 (module doc of [`crate::distance`]).
+#[inline(always)]
 pub(crate) fn geometric_normal(ga: Geom, gb: Geom) -> Vector3<f64> {
     for g in [gb, ga] {
         let n = match g {

@@ -48,6 +48,16 @@ impl Seg {
 /// `b.p + t b.u` (6.23); zero-length segments behave as points.
 #[inline(always)]
 pub(crate) fn segment_params(a: &Seg, b: &Seg) -> (f64, f64) {
+    solve_params(a, b, near_parallel_s)
+}
+
+/// [`segment_params`] with the nearly parallel solve `near` (out of line or inlined).
+#[inline(always)]
+fn solve_params(
+    a: &Seg,
+    b: &Seg,
+    near: impl Fn(&Vector3<f64>, &Vector3<f64>, &Vector3<f64>, f64, f64, f64) -> f64,
+) -> (f64, f64) {
     let (u, v) = (&a.u, &b.u);
     let w = b.p - a.p;
     let (uv, uw, vw) = (u.dot(v), u.dot(&w), v.dot(&w));
@@ -55,7 +65,7 @@ pub(crate) fn segment_params(a: &Seg, b: &Seg) -> (f64, f64) {
     let s = if n > WELL_CONDITIONED * a.uu * b.uu {
         (b.uu * uw - uv * vw) / n
     } else {
-        near_parallel_s(u, v, &w, uv, vw, b.inv_uu)
+        near(u, v, &w, uv, vw, b.inv_uu)
     };
     let s = clamp01(s);
     // Step 1 (Table 6.3 analogue): best t for this s, saturated.
@@ -77,6 +87,19 @@ pub(crate) fn near_parallel_s(
     vw: f64,
     inv_vv: f64,
 ) -> f64 {
+    orthogonal_s(u, v, w, uv, vw, inv_vv)
+}
+
+/// The body of [`near_parallel_s`], for callers that inline it.
+#[inline(always)]
+fn orthogonal_s(
+    u: &Vector3<f64>,
+    v: &Vector3<f64>,
+    w: &Vector3<f64>,
+    uv: f64,
+    vw: f64,
+    inv_vv: f64,
+) -> f64 {
     let u_perp = u - v * (uv * inv_vv);
     let w_perp = w - v * (vw * inv_vv);
     let den = u_perp.norm_squared();
@@ -87,39 +110,42 @@ pub(crate) fn near_parallel_s(
     }
 }
 
-/// [`segment_params`] for two fresh segments: in the well-conditioned case the three
-/// reciprocals 1/|u|^2, 1/|v|^2 and 1/N share a single division.
-#[inline(always)]
-fn fresh_segment_params(
-    p: &Point3<f64>,
-    u: &Vector3<f64>,
-    q: &Point3<f64>,
-    v: &Vector3<f64>,
-) -> (f64, f64) {
-    let w = q - p;
-    let (uu, vv) = (u.norm_squared(), v.norm_squared());
-    let (uv, uw, vw) = (u.dot(v), u.dot(&w), v.dot(&w));
-    let n = uu * vv - uv * uv;
-    let uuvv = uu * vv;
-    let prod = uuvv * n;
-    if (n > WELL_CONDITIONED * uuvv) & (f64::MIN_POSITIVE..f64::INFINITY).contains(&prod) {
-        let r = 1.0 / prod;
-        let (inv_n, inv_uu, inv_vv) = (uuvv * r, vv * n * r, uu * n * r);
-        let s = clamp01((vv * uw - uv * vw) * inv_n);
-        let t = clamp01((s * uv - vw) * inv_vv);
-        (clamp01((uw + t * uv) * inv_uu), t)
-    } else {
-        segment_params(&Seg::new(*p, *u), &Seg::new(*q, *v))
-    }
-}
+/// Largest reciprocal 1/(|u|^2 |v|^2 N) the one-division path accepts: 2^1022, i.e. the
+/// product itself is a normal number (a subnormal one would lose digits).
+const MAX_RECIP: f64 = 1.0 / f64::MIN_POSITIVE;
 
 /// LL: line segment to line segment (6.4.4).
+///
+/// Well-conditioned pairs (6.34) take the normal equations (6.31) with the three
+/// reciprocals 1/|u|^2, 1/|v|^2 and 1/N from a single division; the rest (nearly parallel,
+/// degenerate, or a product outside the normal range) take the general solve of
+/// [`segment_params`].
 #[inline]
 pub fn ll(a: &Lss, b: &Lss) -> DistanceResult {
     let [p0, p1] = a.vertices();
     let [q0, q1] = b.vertices();
-    let (u, v) = (p1 - p0, q1 - q0);
-    let (s, t) = fresh_segment_params(p0, &u, q0, &v);
+    let (u, v, w) = (p1 - p0, q1 - q0, q0 - p0);
+    let (uu, vv) = (u.norm_squared(), v.norm_squared());
+    let (uv, uw, vw) = (u.dot(&v), u.dot(&w), v.dot(&w));
+    let uuvv = uu * vv;
+    let n = uuvv - uv * uv;
+    // r is a positive normal number at most 2^1022 exactly when the product is a positive
+    // normal number; the non-short-circuit `&` avoids a separate branch per test.
+    let r = 1.0 / (uuvv * n);
+    // Plain compares: `RangeInclusive::contains` costs three more instructions here.
+    #[allow(clippy::manual_range_contains)]
+    let fast = (n > WELL_CONDITIONED * uuvv) & (r >= f64::MIN_POSITIVE) & (r <= MAX_RECIP);
+    let (s, t) = if fast {
+        let nr = n * r;
+        let s = clamp01((vv * uw - uv * vw) * (uuvv * r));
+        let t = clamp01((s * uv - vw) * (uu * nr));
+        (clamp01((uw + t * uv) * (vv * nr)), t)
+    } else {
+        // Nearly parallel or degenerate: inlined as a cold branch without calls, so the
+        // common path spills nothing.
+        std::hint::cold_path();
+        solve_params(&Seg::new(*p0, u), &Seg::new(*q0, v), orthogonal_s)
+    };
     let c = Closest {
         a: p0 + u * s,
         b: q0 + v * t,
@@ -259,6 +285,40 @@ mod tests {
             let b: Ssv = Lss::new(q, q + v, 0.0).unwrap().into();
             let r = distance(&a, &b);
             check_result(&r, &a, &b, scale_of(&a, &b));
+        }
+    }
+
+    /// The one-division fast path of [`ll`] against the general [`segment_params`] (three
+    /// divisions, independent reciprocals) on random pairs at every scale, including scales
+    /// where |u|^2 |v|^2 N (~ scale^8) leaves the normal range (1e+-40) and the guard must
+    /// divert to the general solve.
+    #[test]
+    fn fast_path_matches_general_solve_at_all_scales() {
+        let mut rng = rng(9);
+        for &scale in &[1e-40, 1e-30, 1e-6, 1.0, 1e6, 1e30, 1e40] {
+            for _ in 0..2000 {
+                let (a, b) = (rand_lss(&mut rng, scale), rand_lss(&mut rng, scale));
+                let r = ll(&a, &b);
+                let [p0, p1] = a.vertices();
+                let [q0, q1] = b.vertices();
+                let (s, t) = segment_params(&Seg::new(*p0, p1 - p0), &Seg::new(*q0, q1 - q0));
+                let (PrimitiveParam::Line(rs), PrimitiveParam::Line(rt)) = (r.param_a, r.param_b)
+                else {
+                    panic!("{r:?}");
+                };
+                // Parameters agree where the solution is well determined; the distance
+                // always agrees (it is flat in the parameters near the optimum).
+                let d = (a.point_at(s) - b.point_at(t)).norm();
+                assert!(
+                    (r.c_star().norm() - d).abs() <= 1e-13 * scale,
+                    "{a:?} {b:?}"
+                );
+                assert!(
+                    (rs - s).abs() <= 1e-6 && (rt - t).abs() <= 1e-6,
+                    "{a:?} {b:?}"
+                );
+                check_result(&r, &a.into(), &b.into(), scale_of(&a.into(), &b.into()));
+            }
         }
     }
 
