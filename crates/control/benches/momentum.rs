@@ -1,6 +1,7 @@
 //! Criterion benchmarks of the per-cycle angular momentum work on Lola Type 2 (thesis ch. 7):
 //! `J_L`/`J_Lz` (centroidal computation at `q`, incl. kinematics, and the copy alone), the
-//! compensation term (7.9), the minimisation weight update (7.13) and its `W^-1 x` (7.15).
+//! compensation term (7.9), the minimisation weight update (7.13) and its `W^-1 x` (7.15);
+//! the CoM Jacobian as the baseline the IK cycle pays anyway.
 
 use biped_control::momentum::{Compensation, MomentumMinimisation, VerticalMomentum};
 use biped_dynamics::{Centroidal, Data};
@@ -30,6 +31,11 @@ fn bench_momentum(c: &mut Criterion) {
     group.measurement_time(Duration::from_secs(2));
     group.bench_function("jlz_compute", |b| {
         b.iter(|| vm.compute(m, &mut data, &mut centroidal, black_box(&q)))
+    });
+    // Baseline: the CoM Jacobian the CoM task needs anyway (same kinematics and columns).
+    let mut jc = nalgebra::DMatrix::zeros(3, m.nv());
+    group.bench_function("com_jacobian_baseline", |b| {
+        b.iter(|| centroidal.com_jacobian(m, &mut data, black_box(&q), &mut jc))
     });
     group.bench_function("jlz_update_only", |b| {
         b.iter(|| vm.update(black_box(&centroidal)))

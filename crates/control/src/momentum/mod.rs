@@ -6,10 +6,14 @@
 //! - [`minimisation`]: the weight `W = delta E + J_Lz^T J_Lz` (7.13)-(7.15).
 //! - [`arm_swing`]: the reference method's arm CoG targets from the opposite leg (7.3.1).
 //!
-//! One IK cycle (1 kHz) with compensation: `VerticalMomentum::update(&centroidal)` after the
-//! centroidal computation the CoM task needs anyway, then `Compensation::add_to(J_Lz,
-//! qdot_prev, L_ref,z(t), &mut y)` on the null-space input `y` of Alg. 4.3 (same sign as a
-//! cost gradient). With minimisation instead: `MomentumMinimisation::update(J_Lz, &mut W)`.
+//! One IK cycle (1 kHz) with compensation (7.3.2): after the centroidal computation the CoM
+//! task needs anyway (`Centroidal::compute_matrix`), `VerticalMomentum::update(&centroidal)`;
+//! then `Compensation::add_to(J_Lz, qdot_prev, L_ref,z(t), &mut y)` on top of the cost
+//! gradient `y = grad H` and `ik::RmrcProblem::null_space = Some((&y, alpha_N))`. `y` has
+//! the sign of a gradient (RMRC applies `-alpha_N N W^-1 y`); to get (7.8) exactly,
+//! `y = alpha (dH/dq)^T + qdot_r` with unit null-space gain, set the compensation gain to
+//! `1 / alpha_N`. With minimisation (7.5) instead: `MomentumMinimisation::update(J_Lz, &mut W)`
+//! and pass `W` as the RMRC weight. `L_ref,z(t)` comes from [`MomentumReference::sample`].
 
 pub mod arm_swing;
 pub mod compensation;
