@@ -64,10 +64,10 @@ pub struct Rmrc {
     n: usize,
     /// `B = J W^-1 J^T (+ damping)`, then its Cholesky factor (lower triangle).
     b: DMatrix<f64>,
+    /// `J^T` (n x m_max): row i of J is a contiguous column.
+    jt: DMatrix<f64>,
     /// Columns `W^-1 J_i^T`.
     wjt: DMatrix<f64>,
-    row: DVector<f64>,
-    wrow: DVector<f64>,
     z: DVector<f64>,
     lambda: DVector<f64>,
 }
@@ -79,9 +79,8 @@ impl Rmrc {
             m_max,
             n,
             b: DMatrix::zeros(m_max, m_max),
+            jt: DMatrix::zeros(n, m_max),
             wjt: DMatrix::zeros(n, m_max),
-            row: DVector::zeros(n),
-            wrow: DVector::zeros(n),
             z: DVector::zeros(n),
             lambda: DVector::zeros(m_max),
         }
@@ -111,18 +110,21 @@ impl Rmrc {
             None => self.z.fill(0.0),
         }
         self.assemble(p.jacobian, m, p.weight)?;
+        let n = self.n;
         for i in 0..m {
-            let jz = (0..self.n)
-                .map(|c| p.jacobian[(i, c)] * self.z[c])
-                .sum::<f64>();
-            self.lambda[i] = p.xdot[i] - jz;
+            let ji = &self.jt.as_slice()[i * n..(i + 1) * n];
+            self.lambda[i] = p.xdot[i] - dot(ji, self.z.as_slice());
             self.b[(i, i)] += p.damping + p.softness.map_or(0.0, |s| s[i]);
         }
         cholesky_in_place(&mut self.b, m)?;
         cholesky_solve_in_place(&self.b, m, &mut self.lambda);
         qdot.copy_from(&self.z);
+        let out = qdot.as_mut_slice();
         for k in 0..m {
-            qdot.axpy(self.lambda[k], &self.wjt.column(k), 1.0);
+            let (l, wk) = (self.lambda[k], &self.wjt.as_slice()[k * n..(k + 1) * n]);
+            for (o, w) in out.iter_mut().zip(wk) {
+                *o += l * w;
+            }
         }
         check_finite("qdot", qdot.as_slice())
     }
@@ -139,26 +141,26 @@ impl Rmrc {
         }
     }
 
-    /// Columns `W^-1 J_i^T` and the lower triangle of `B = J W^-1 J^T`.
+    /// `J^T`, columns `W^-1 J_i^T` and the lower triangle of `B = J W^-1 J^T`.
     fn assemble(&mut self, j: &DMatrix<f64>, m: usize, w: &Weight) -> Result<(), IkError> {
-        for i in 0..m {
-            for c in 0..self.n {
-                self.row[c] = j[(i, c)];
+        let n = self.n;
+        w.validate(n)?;
+        for c in 0..n {
+            for i in 0..m {
+                self.jt[(c, i)] = j[(i, c)];
             }
-            w.solve_into(&self.row, &mut self.wrow)?;
-            self.wjt.set_column(i, &self.wrow);
+        }
+        let (jt, wjt) = (self.jt.as_slice(), self.wjt.as_mut_slice());
+        for i in 0..m {
+            w.apply_inverse(&jt[i * n..(i + 1) * n], &mut wjt[i * n..(i + 1) * n]);
         }
         for k in 0..m {
-            let col = self.wjt.column(k);
+            let wk = &self.wjt.as_slice()[k * n..(k + 1) * n];
             for i in k..m {
-                let mut s = 0.0;
-                for c in 0..self.n {
-                    s += j[(i, c)] * col[c];
-                }
-                self.b[(i, k)] = s;
+                self.b[(i, k)] = dot(&jt[i * n..(i + 1) * n], wk);
             }
         }
-        Ok(())
+        check_finite("W^-1 J^T", &self.wjt.as_slice()[..m * n])
     }
 
     /// Validates the shapes of a problem and the output.
@@ -206,4 +208,10 @@ impl Rmrc {
         }
         Ok(())
     }
+}
+
+/// Dot product of two equally long slices.
+#[inline]
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }

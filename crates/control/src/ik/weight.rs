@@ -103,28 +103,37 @@ impl Weight {
             });
         }
         self.validate(n)?;
+        self.apply_inverse(x.as_slice(), out.as_mut_slice());
+        if out.iter().all(|v| v.is_finite()) {
+            Ok(())
+        } else {
+            Err(IkError::NonFinite("W^-1 x"))
+        }
+    }
+
+    /// `out = W^-1 x` on slices of equal length n, without validation (the caller has
+    /// called [`Self::validate`] for n).
+    pub(crate) fn apply_inverse(&self, x: &[f64], out: &mut [f64]) {
         match self {
-            Weight::Identity => out.copy_from(x),
-            Weight::Diagonal(d) => out.zip_zip_apply(x, d, |o, xi, di| *o = xi / di),
+            Weight::Identity => out.copy_from_slice(x),
+            Weight::Diagonal(d) => {
+                for ((o, xi), di) in out.iter_mut().zip(x).zip(d.iter()) {
+                    *o = xi / di;
+                }
+            }
             Weight::DiagonalRankOne { diag, u } => {
                 // out = D^-1 x; s = u^T D^-1 x; c = 1 + u^T D^-1 u  (7.14)
-                let mut s = 0.0;
-                let mut c = 1.0;
-                for i in 0..n {
+                let (mut s, mut c) = (0.0, 1.0);
+                for i in 0..x.len() {
                     out[i] = x[i] / diag[i];
                     s += u[i] * out[i];
                     c += u[i] * u[i] / diag[i];
                 }
                 let f = s / c;
-                for i in 0..n {
+                for i in 0..x.len() {
                     out[i] -= f * u[i] / diag[i];
                 }
             }
-        }
-        if out.iter().all(|v| v.is_finite()) {
-            Ok(())
-        } else {
-            Err(IkError::NonFinite("W^-1 x"))
         }
     }
 
