@@ -1,7 +1,10 @@
 //! Preallocated per-call workspace (model/data split): every recursion writes here.
 
+use crate::mechanism::ankle::AnkleLoop;
 use crate::mechanism::MechanismError;
+use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
+use crate::model::JointModel;
 use crate::spatial::{ArticulatedInertia, Force, Motion, SpatialTransform};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
 use crate::Model;
@@ -72,6 +75,10 @@ pub struct Data {
     pub(crate) sub_b: Vec<[Force; MAX_SUBSYSTEM_DOF]>,
     /// `p_S` (2.68 for sub-systems), per sub-system.
     pub(crate) sub_p: Vec<[f64; MAX_SUBSYSTEM_DOF]>,
+    /// Constant frames of Harmonic Drive rotors (placement times initial rotor pose), per body.
+    pub(crate) rotor_frame: Vec<SpatialTransform>,
+    /// Last closed ankle slider-crank loop, reused by the actuator's other parts.
+    pub(crate) ankle_loop: Option<AnkleLoop>,
     /// Body whose mechanism failed in the last kinematics pass (reported as an error).
     pub(crate) mechanism_fault: Option<(usize, MechanismError)>,
     /// Generalized accelerations (output of forward dynamics).
@@ -96,6 +103,16 @@ impl Data {
         for (i, b) in model.bodies.iter().enumerate() {
             if matches!(b.joint, Joint::Quaternion) {
                 jacobian6[i] = quaternion_jacobian();
+            }
+        }
+        for (i, b) in model.bodies.iter().enumerate() {
+            if let JointModel::Coupled {
+                mechanism: Mechanism::HarmonicDrive(rotor),
+                ..
+            } = &b.joint_model
+            {
+                // Constant rotor Jacobian column [0, 0, N, 0, 0, 0] (3.1).
+                jacobian6[i][(2, 0)] = rotor.params().ratio;
             }
         }
         let mut col_offset = vec![0; n + 1];
@@ -131,6 +148,8 @@ impl Data {
             sub_l: vec![[[0.0; MAX_SUBSYSTEM_DOF]; MAX_SUBSYSTEM_DOF]; ns],
             sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
+            rotor_frame: crate::kinematics::rotor_frames(model),
+            ankle_loop: None,
             mechanism_fault: None,
             ddq: DVector::zeros(nv),
             tau: DVector::zeros(nv),

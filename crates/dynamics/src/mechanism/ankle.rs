@@ -139,6 +139,7 @@ struct SliderCrank {
 }
 
 /// Per-actuator jets of one evaluation.
+#[derive(Debug, Clone, Copy)]
 struct Loop {
     /// Nut travel `l_i`.
     travel: SJet<2>,
@@ -380,13 +381,17 @@ impl SliderCrank {
 
     /// Frame jets of one part at the input jets `q`.
     fn frame(&self, part: AnklePart, q: &[SJet<2>; 2]) -> Result<FrameJet<2>, MechanismError> {
+        Ok(self.frame_of(part, &self.close_loop(q)?))
+    }
+
+    /// Frame jets of one part from the closed loop `lp` (3.30)-(3.37).
+    fn frame_of(&self, part: AnklePart, lp: &Loop) -> FrameJet<2> {
         let a = &self.act;
-        let lp = self.close_loop(q)?;
         let frame = &self.frame;
         let axis = VJet::constant(a.screw_axis);
         let top = VJet::constant(a.screw_top);
         let nut = top.add(axis.scale(lp.travel));
-        Ok(match part {
+        match part {
             AnklePart::Nut => FrameJet::fixed_axes(frame, nut),
             AnklePart::Rotor => {
                 let phi = lp
@@ -402,8 +407,18 @@ impl SliderCrank {
                     .scale(SJet::constant(1.0 / a.rod_length));
                 FrameJet::from_direction(u, &Vector3::y(), nut)
             }
-        })
+        }
     }
+}
+
+/// A closed slider-crank loop at given inputs, shared by the three parts (nut, rotor, rod) of
+/// one actuator so that the loop (3.23)-(3.29) is solved once per actuator, not once per part.
+#[derive(Debug, Clone, Copy)]
+pub struct AnkleLoop {
+    crank: SliderCrank,
+    q: [f64; 2],
+    qd: [f64; 2],
+    lp: Loop,
 }
 
 /// One part of one slider-crank of an [`AnkleDrive`] as a [`Coupling`] (inputs: flexion,
@@ -427,6 +442,38 @@ impl AnkleCoupling {
     }
 }
 
+impl AnkleCoupling {
+    /// Same result as [`Coupling::motion`], reusing `cache` when it holds this part's
+    /// slider-crank closed at exactly the same `(q_in, qd_in)`, else closing the loop and
+    /// storing it in `cache` for the actuator's next part.
+    pub fn motion_cached(
+        &self,
+        q_in: &[f64],
+        qd_in: &[f64],
+        cache: &mut Option<AnkleLoop>,
+    ) -> Result<CoupledMotion, MechanismError> {
+        let q = seed_inputs::<2>(NAME, q_in, qd_in)?;
+        let (qv, qdv) = ([q[0].v, q[1].v], [q[0].vel, q[1].vel]);
+        let hit = cache
+            .as_ref()
+            .filter(|c| c.q == qv && c.qd == qdv && c.crank == self.crank);
+        let lp = match hit {
+            Some(c) => c.lp,
+            None => {
+                let lp = self.crank.close_loop(&q)?;
+                *cache = Some(AnkleLoop {
+                    crank: self.crank,
+                    q: qv,
+                    qd: qdv,
+                    lp,
+                });
+                lp
+            }
+        };
+        Ok(self.crank.frame_of(self.part, &lp).motion())
+    }
+}
+
 impl Coupling for AnkleCoupling {
     fn n_inputs(&self) -> usize {
         2
@@ -436,5 +483,36 @@ impl Coupling for AnkleCoupling {
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
         let q = seed_inputs::<2>(NAME, q_in, qd_in)?;
         Ok(self.crank.frame(self.part, &q)?.motion())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The cached evaluation equals the uncached one part by part, across actuators (cache
+    /// misses on a different crank) and across inputs (misses on different `q` or `qd`).
+    #[test]
+    fn cached_motion_equals_motion() {
+        let drive = AnkleDrive::new(AnkleDriveParams::default()).expect("default drive");
+        let mut cache = None;
+        for (q, qd) in [
+            ([0.1, -0.05], [0.3, 0.2]),
+            ([0.1, -0.05], [0.3, 0.1]),
+            ([0.0, 0.1], [0.0, 0.0]),
+        ] {
+            for act in 0..2 {
+                for part in [AnklePart::Nut, AnklePart::Rotor, AnklePart::Rod] {
+                    let c = drive.part(act, part).expect("part");
+                    let cached = c.motion_cached(&q, &qd, &mut cache).expect("cached");
+                    assert_eq!(cached, c.motion(&q, &qd).expect("motion"));
+                    assert_eq!(cache.as_ref().map(|l| l.crank), Some(c.crank));
+                }
+            }
+        }
+        let c = drive.part(0, AnklePart::Rod).expect("part");
+        assert!(c
+            .motion_cached(&[f64::NAN, 0.0], &[0.0; 2], &mut cache)
+            .is_err());
     }
 }

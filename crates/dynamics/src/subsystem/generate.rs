@@ -161,6 +161,10 @@ fn build_subsystem(bodies: &[Body], members: Vec<BodyId>) -> Result<Subsystem, M
                 .enumerate()
                 .any(|(j, b)| b.parent == Some(m) && !is_member(j))
         })
+        .collect::<Vec<_>>();
+    let rigid_member = members
+        .iter()
+        .map(|m| !with_outside_children.contains(m))
         .collect();
     Ok(Subsystem {
         members,
@@ -168,6 +172,7 @@ fn build_subsystem(bodies: &[Body], members: Vec<BodyId>) -> Result<Subsystem, M
         v_set,
         columns,
         with_outside_children,
+        rigid_member,
     })
 }
 

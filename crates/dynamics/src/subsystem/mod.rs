@@ -30,6 +30,9 @@ pub struct Subsystem {
     pub(crate) columns: Vec<[usize; crate::model::MAX_INDEX_SET]>,
     /// Members with children outside the sub-system, `P_S` (Fig. 2.11).
     pub(crate) with_outside_children: Vec<BodyId>,
+    /// Per member: true if it has no child outside the sub-system, so that its `M-bar_j` in
+    /// the backward pass is still its rigid-body inertia `M_j` (cheaper congruence).
+    pub(crate) rigid_member: Vec<bool>,
 }
 
 impl Subsystem {

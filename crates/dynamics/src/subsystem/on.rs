@@ -12,24 +12,57 @@
 
 use super::MAX_SUBSYSTEM_DOF as MAX;
 use crate::kinematics::joint_column;
-use crate::spatial::{ArticulatedInertia, Force, Motion};
+use crate::spatial::{skew, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform};
 use crate::{Data, DynamicsError, Model};
-use nalgebra::DVector;
+use nalgebra::{DVector, Matrix3};
+
+/// Calls `$f::<N>(args)` with `N` = the sub-system's DoF count for 1 and 2 (the Harmonic Drive
+/// rotors, knees and ankles: fully unrolled, no work on unused columns) and `N = MAX` otherwise.
+macro_rules! by_dof {
+    ($n:expr, $f:ident($($a:expr),*)) => {
+        match $n {
+            1 => $f::<1>($($a),*),
+            2 => $f::<2>($($a),*),
+            _ => $f::<MAX>($($a),*),
+        }
+    };
+}
+
+/// Number of columns handled by the `N`-specialised branch: `N` itself for the unrolled sizes,
+/// the sub-system's actual DoF count for the general (`N = MAX`) branch.
+#[inline(always)]
+fn dof<const N: usize>(model: &Model, s: usize) -> usize {
+    if N < MAX {
+        N
+    } else {
+        model.subsystems[s].v_set.len()
+    }
+}
 
 /// Member kinematics `C-hat_j`, `J-hat_j`, `b-hat_j` of sub-system `s` (2.77)-(2.79), after
 /// the first forward recursion filled `x`, `bias_acc` and the joint Jacobians.
 pub(crate) fn hat_kinematics(model: &Model, data: &mut Data, s: usize) {
+    by_dof!(
+        model.subsystems[s].v_set.len(),
+        hat_kinematics_n(model, data, s)
+    )
+}
+
+/// [`hat_kinematics`] for sub-systems of at most `N` coordinates.
+#[inline]
+fn hat_kinematics_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
     let sub = &model.subsystems[s];
-    let n = sub.v_set.len();
+    let n = dof::<N>(model, s);
     for (m, &j) in sub.members.iter().enumerate() {
         let body = &model.bodies[j];
         let x = data.x[j];
-        let mut cols = [Motion::zero(); MAX];
+        let mut cols = [Motion::zero(); N];
         match body.parent {
             Some(pp) if body.parent != sub.parent => {
                 data.cbar[j] = x.compose(&data.cbar[pp]);
-                for (c, col) in cols.iter_mut().enumerate().take(n) {
-                    *col = x.apply_motion(&data.jbar[pp][c]);
+                let jp = &data.jbar[pp];
+                for (col, c) in cols.iter_mut().zip(jp).take(n) {
+                    *col = x.apply_motion(c);
                 }
                 data.bbar[j] = x.apply_motion(&data.bbar[pp]) + data.bias_acc[j];
             }
@@ -41,7 +74,7 @@ pub(crate) fn hat_kinematics(model: &Model, data: &mut Data, s: usize) {
         for (k, &pos) in sub.columns[m].iter().take(body.v_set.len()).enumerate() {
             cols[pos] += joint_column(data, j, &body.joint, k);
         }
-        data.jbar[j] = cols;
+        data.jbar[j][..n].copy_from_slice(&cols[..n]);
     }
 }
 
@@ -53,17 +86,31 @@ pub(crate) fn backward(
     s: usize,
     tau: &DVector<f64>,
 ) -> Result<(), DynamicsError> {
+    by_dof!(
+        model.subsystems[s].v_set.len(),
+        backward_n(model, data, s, tau)
+    )
+}
+
+/// [`backward`] for sub-systems of at most `N` coordinates.
+#[inline]
+fn backward_n<const N: usize>(
+    model: &Model,
+    data: &mut Data,
+    s: usize,
+    tau: &DVector<f64>,
+) -> Result<(), DynamicsError> {
     let sub = &model.subsystems[s];
-    let n = sub.v_set.len();
-    let mut ms = [[0.0; MAX]; MAX];
-    let mut bs = [Force::zero(); MAX];
-    let mut rhs = [0.0; MAX];
-    for (c, r) in rhs.iter_mut().enumerate().take(n) {
-        *r = tau[sub.v_set[c]];
+    let n = dof::<N>(model, s);
+    let mut ms = [[0.0; N]; N];
+    let mut bs = [Force::zero(); N];
+    let mut rhs = [0.0; N];
+    for (r, &v) in rhs.iter_mut().zip(&sub.v_set) {
+        *r = tau[v];
     }
     let mut kc = ArticulatedInertia::zero();
     let mut fc = Force::zero();
-    for &j in &sub.members {
+    for (mi, &j) in sub.members.iter().enumerate() {
         let m = &data.mbar[j];
         let (cj, jj) = (&data.cbar[j], &data.jbar[j]);
         let hat_f = m.apply(&data.bbar[j]) - data.fbar[j];
@@ -76,15 +123,21 @@ pub(crate) fn backward(
             rhs[c] -= jj[c].dot(&hat_f);
         }
         if sub.parent.is_some() {
-            m.add_tr_transform_to(cj, &mut kc);
+            if sub.rigid_member[mi] {
+                add_rigid_congruence(&model.bodies[j].inertia, cj, &mut kc);
+            } else {
+                m.add_tr_transform_to(cj, &mut kc);
+            }
             fc += cj.tr_apply_force(&hat_f);
         }
     }
     cholesky(&mut ms, n, &sub.v_set)?;
     solve(&ms, n, &mut rhs);
-    data.sub_l[s] = ms;
-    data.sub_b[s] = bs;
-    data.sub_p[s] = rhs;
+    for r in 0..n {
+        data.sub_l[s][r][..=r].copy_from_slice(&ms[r][..=r]);
+    }
+    data.sub_b[s][..n].copy_from_slice(&bs[..n]);
+    data.sub_p[s][..n].copy_from_slice(&rhs[..n]);
     let Some(p) = sub.parent else { return Ok(()) };
     // K_S = sum C^T M C - W^T W with W = L^-1 B_S (forward substitution over force columns).
     let mut w = bs;
@@ -96,41 +149,75 @@ pub(crate) fn backward(
         w[c] = w[c] * (1.0 / ms[c][c]);
         kc.sub_outer(&w[c], 1.0);
     }
-    for (c, b) in bs.iter().enumerate().take(n) {
-        fc += *b * rhs[c];
+    for (b, r) in bs.iter().zip(&rhs).take(n) {
+        fc += *b * *r;
     }
     data.mbar[p] += kc;
     data.fbar[p] -= fc;
     Ok(())
 }
 
+/// `out += C^T M C` for a rigid-body inertia `M` (the `C-hat^T M-hat C-hat` term of (2.76) for
+/// a member without children outside, whose `M-hat_j` is still `M_j`): in parent axes the
+/// CoM is `c = A^T c_j + r`, and `C^T M C = [I_c' + m (|c|^2 E - c c^T), m c~; -m c~, m E]`.
+#[inline]
+fn add_rigid_congruence(
+    inertia: &RigidInertia,
+    x: &SpatialTransform,
+    out: &mut ArticulatedInertia,
+) {
+    let m = inertia.mass();
+    let c = x.rot.tr_mul(&inertia.com()) + x.trans;
+    let ic = x.rot.tr_mul(&(inertia.inertia_about_com() * x.rot));
+    let mc = c * m;
+    let mut ang = ic - mc * c.transpose();
+    let diag = mc.dot(&c);
+    for k in 0..3 {
+        ang[(k, k)] += diag;
+    }
+    out.ang += (ang + ang.transpose()) * 0.5;
+    out.cross += skew(&mc);
+    out.lin += Matrix3::from_diagonal_element(m);
+}
+
 /// Second forward step of sub-system `s` (Algorithm 2.4, (2.90)): `qddot_S = P_S a_p + p_S`
 /// into `ddq`, and accelerations of the members with children outside (`P_S`) only.
 pub(crate) fn forward(model: &Model, data: &mut Data, s: usize) {
+    by_dof!(model.subsystems[s].v_set.len(), forward_n(model, data, s))
+}
+
+/// [`forward`] for sub-systems of at most `N` coordinates.
+#[inline]
+fn forward_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
     let sub = &model.subsystems[s];
-    let n = sub.v_set.len();
+    let n = dof::<N>(model, s);
     let ap = sub.parent.map_or(Motion::zero(), |p| data.acc[p]);
-    let mut y = [0.0; MAX];
-    for (c, yc) in y.iter_mut().enumerate().take(n) {
-        *yc = data.sub_b[s][c].dot(&ap);
+    let mut y = [0.0; N];
+    for (yc, b) in y.iter_mut().zip(&data.sub_b[s]).take(n) {
+        *yc = b.dot(&ap);
     }
     solve(&data.sub_l[s], n, &mut y);
-    let mut qdd = [0.0; MAX];
+    let mut qdd = [0.0; N];
     for c in 0..n {
         qdd[c] = data.sub_p[s][c] - y[c];
         data.ddq[sub.v_set[c]] = qdd[c];
     }
     for &j in &sub.with_outside_children {
         let mut a = data.cbar[j].apply_motion(&ap) + data.bbar[j];
-        for (c, q) in qdd.iter().enumerate().take(n) {
-            a += data.jbar[j][c] * *q;
+        for (col, q) in data.jbar[j].iter().zip(&qdd).take(n) {
+            a += *col * *q;
         }
         data.acc[j] = a;
     }
 }
 
 /// In-place Cholesky `M_S = L L^T` of the leading `n x n` block (lower triangle used).
-fn cholesky(m: &mut [[f64; MAX]; MAX], n: usize, v_set: &[usize]) -> Result<(), DynamicsError> {
+#[inline]
+fn cholesky<const N: usize>(
+    m: &mut [[f64; N]; N],
+    n: usize,
+    v_set: &[usize],
+) -> Result<(), DynamicsError> {
     for c in 0..n {
         let scale = m[c][c].abs();
         let d = m[c][c] - m[c][..c].iter().map(|x| x * x).sum::<f64>();
@@ -150,8 +237,10 @@ fn cholesky(m: &mut [[f64; MAX]; MAX], n: usize, v_set: &[usize]) -> Result<(), 
     Ok(())
 }
 
-/// Solves `L L^T x = b` in place with the factor of [`cholesky`].
-fn solve(l: &[[f64; MAX]; MAX], n: usize, b: &mut [f64; MAX]) {
+/// Solves `L L^T x = b` in place for the leading `n x n` block of a factor of [`cholesky`]
+/// (stored in an `S x S` array; `b` holds at least `n` entries).
+#[inline]
+fn solve<const S: usize>(l: &[[f64; S]; S], n: usize, b: &mut [f64]) {
     for c in 0..n {
         for k in 0..c {
             b[c] -= l[c][k] * b[k];
@@ -163,5 +252,26 @@ fn solve(l: &[[f64; MAX]; MAX], n: usize, b: &mut [f64; MAX]) {
             b[c] -= l[k][c] * b[k];
         }
         b[c] /= l[c][c];
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Isometry3, Vector3};
+
+    /// The rigid-member congruence against the general articulated one, `C^T M C`.
+    #[test]
+    fn rigid_congruence_matches_the_articulated_transform() {
+        let ic = Matrix3::new(0.3, 0.01, -0.02, 0.01, 0.2, 0.03, -0.02, 0.03, 0.25);
+        let inertia = RigidInertia::new(2.5, Vector3::new(0.1, -0.2, 0.05), ic).expect("valid");
+        let pose = Isometry3::new(Vector3::new(0.3, -0.1, 0.7), Vector3::new(0.9, -0.4, 1.2));
+        let x = SpatialTransform::from_pose(&pose);
+        let mut fast = ArticulatedInertia::zero();
+        add_rigid_congruence(&inertia, &x, &mut fast);
+        let dense = x.to_matrix().transpose() * inertia.to_matrix() * x.to_matrix();
+        assert!((fast.to_matrix() - dense).amax() < 1e-12);
+        let general = inertia.to_articulated().tr_transform(&x);
+        assert!((fast.to_matrix() - general.to_matrix()).amax() < 1e-12);
     }
 }
