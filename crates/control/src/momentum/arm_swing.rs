@@ -1,5 +1,5 @@
-//! Reference arm-swing method (thesis 7.3.1, after Buschmann [28]): the arm CoG tasks of
-//! Table 4.2 follow the *opposite* leg, scaled down because the arms are shorter.
+//! Reference arm-swing method (thesis 7.3.1, after Buschmann, thesis ref. 28): the arm CoG
+//! tasks of Table 4.2 follow the *opposite* leg, scaled down because the arms are shorter.
 //!
 //! Target of the right arm CoG relative to the robot CoG (same frame as the inputs, e.g. the
 //! torso planning frame of Table 4.2):

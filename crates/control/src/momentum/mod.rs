@@ -2,7 +2,7 @@
 //!
 //! - [`jacobian`]: `J_L`, `J_Lz`, `L_z` and its rate (7.1)-(7.2), `I_zz^CoG` (7.11).
 //! - [`compensation`]: producing/reducing split and the null-space term (7.3)-(7.9).
-//! - [`reference`]: the cubic per-step reference `L_ref,z` (7.10)-(7.12).
+//! - [`reference`](mod@reference): the cubic per-step reference `L_ref,z` (7.10)-(7.12).
 //! - [`minimisation`]: the weight `W = delta E + J_Lz^T J_Lz` (7.13)-(7.15).
 //! - [`arm_swing`]: the reference method's arm CoG targets from the opposite leg (7.3.1).
 //!

@@ -36,7 +36,7 @@ impl MomentumReference {
     }
 
     /// Starts a step at `t_b` of duration `t_step > 0` turning the upper body by `delta_phi_u`
-    /// [rad]: end value `I_zz delta_phi_u / t_step`, zero end rate (7.11)-(7.12).
+    /// (rad): end value `I_zz delta_phi_u / t_step`, zero end rate (7.11)-(7.12).
     pub fn start_step(
         &mut self,
         t_b: f64,
