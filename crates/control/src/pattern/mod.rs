@@ -12,6 +12,19 @@
 //! - [`generate`]: [`WalkingPattern`], sampled at the control period.
 //! - [`fit`]: defaults fitted to the Lola-like model (CoM height, hip spacing).
 //!
+//! Choices where the brief/thesis leave freedom (documented in the sub-modules):
+//! - `step_length` is the distance of each footprint ahead of the previous one (the first
+//!   and last steps are half steps); `step_sideways` is the side step of the leading foot,
+//!   the trailing foot closes to the nominal width (so the feet never come closer than
+//!   `step_width`); overlapping foot rectangles are rejected.
+//! - The ZMP reference point of a foot is its sole origin (below the ankle axis); transfers
+//!   in double support use the minimum-jerk blend.
+//! - The CoM runs at the sample period `dt` (1 ms): at such short periods the doubling
+//!   iteration alone leaves DARE residuals ~1e-5, so its result is polished by
+//!   Newton-Kleinman steps (residual ~1e-18) and accepted only if stabilising.
+//! - The default CoM height is the Lola-like model's CoM above the soles at 0.4 rad knee
+//!   bend (0.960 m, [`fit::standing_com_height`]); the default step width is its hip spacing.
+//!
 //! Conventions: world frame with the ground at `z = 0`, x forward and the feet initially at
 //! `y = +-step_width / 2`; foot poses are the sole frames (`l_sole`, `r_sole` of the model).
 

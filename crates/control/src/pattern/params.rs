@@ -70,7 +70,7 @@ pub struct PatternParams {
     pub foot: FootGeometry,
 }
 
-/// Standing CoM height of the Lola-like model with 0.4 rad knee bend (see `fit` module) \[m].
+/// Standing CoM height of the Lola-like model with 0.4 rad knee bend (`fit::standing_com_height` = 0.9603 m) \[m].
 pub const LOLA_COM_HEIGHT: f64 = 0.96;
 
 /// Lateral hip joint spacing of the Lola-like model (2 x 0.09 m in `lola.toml`) \[m].
