@@ -87,7 +87,12 @@ pub(crate) fn assemble(c: Closest, ra: f64, rb: f64, ga: Geom, gb: Geom) -> Dist
         (len, cv * (1.0 / len))
     } else {
         std::hint::cold_path();
-        tiny_normal(&cv, ga, gb)
+        if let (Geom::Frame(_), Geom::Frame(_)) = (ga, gb) {
+            // TT keeps too many values live for the inlined version to pay off.
+            tiny_normal_call(&cv, ga, gb)
+        } else {
+            tiny_normal(&cv, ga, gb)
+        }
     };
     DistanceResult {
         distance: len - ra - rb,
@@ -99,6 +104,13 @@ pub(crate) fn assemble(c: Closest, ra: f64, rb: f64, ga: Geom, gb: Geom) -> Dist
         param_a: c.param_a,
         param_b: c.param_b,
     }
+}
+
+/// [`tiny_normal`] out of line.
+#[cold]
+#[inline(never)]
+fn tiny_normal_call(cv: &Vector3<f64>, ga: Geom, gb: Geom) -> (f64, Vector3<f64>) {
+    tiny_normal(cv, ga, gb)
 }
 
 /// |c*| and the normal when |c*|^2 underflows: c*/|c*| if c* != 0, else the geometric rule.
