@@ -2,6 +2,8 @@
 //! load makes wall-clock medians noisy). Ignored by default; run e.g.
 //! `PERF_FN=tt PERF_N=10000 valgrind --tool=callgrind <test binary> --ignored --exact perf_loop`
 //! and subtract the count of a `PERF_N=0` run: the difference / N is instructions per call.
+//! Build the binary with the bench settings (`cargo test --release -p biped_ssv --test
+//! perf_loops --no-run`; the test profile is not LTO-optimised) and use N >= 10000.
 //! `PERF_FN=model_closest|model_within` times the humanoid model update instead.
 
 use biped_ssv::distance::{ll, lt, pl, pp, pt, tt};
