@@ -8,6 +8,17 @@
 //!
 //! Forces are computed before the dynamics pass from each foot's own joint chain
 //! ([`chain::BodyChain`]), so a right-hand side needs no extra kinematics pass.
+//!
+//! Stiffness and the 1 ms RK4 step (issue item 9). RK4 is stable for `h lambda` on the
+//! negative real axis down to -2.78 and for oscillations up to `h omega ~ 2.8`. The defaults
+//! (per point 2e5 N/m, 400 N s/m, 8 points per foot) give Lola's foot, whose joint-space
+//! inertia includes the reflected rotor inertias, vertical and tilt modes with
+//! `h |lambda| <= ~1` at h = 1 ms; the bristle relaxation `d_t / k_t = 2 ms` gives
+//! `h / tau = 0.5`. The static penetration standing is ~0.2 mm. Lighter feet without rotor
+//! inertia (URDF robots) need softer points: keep `8 d / m_foot` and `sqrt(8 k / m_foot)`
+//! below ~2000 1/s (see `tests/sim_urdf.rs` for the G1: 5e4 N/m, 100 N s/m).
+//! The normal damping fades in over `damping_depth` = 0.1 mm so the force is continuous at
+//! touch-down and never pulls (clamped at 0).
 
 pub mod chain;
 pub mod law;

@@ -78,7 +78,10 @@ impl JointPd {
     /// capped for the free subtree under the zero-order hold of period `T`: with
     /// `a = k_p T^2 / m_sub` and `b = k_d T / m_sub` the sampled loop has the characteristic
     /// polynomial `z^2 + (a/2 + b - 2) z + (a/2 - b + 1)`, stable (Jury) for `a/2 < b < 2`;
-    /// the caps `b <= 1/2`, `a <= 1/2` keep it inside. Target = the joint angles of `q0`.
+    /// the caps `a <= 1/2`, `b <= 1/2` keep it inside with margin (larger caps, e.g. `a = 1`,
+    /// `b = 3/2`, destabilise Lola's coupled legs and contacts at 1 kHz). The price: stance
+    /// ankles are lightly damped (a drop leaves a slow fore-aft rocking for seconds). Target =
+    /// the joint angles of `q0`.
     ///
     /// Elastic (Type 3) gears are controlled collocated: the feedback is the motor encoder over
     /// `N` (PD on the link encoder through the gear spring is non-collocated and goes unstable

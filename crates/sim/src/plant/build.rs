@@ -196,6 +196,12 @@ pub const URDF_GEAR_RATIO: f64 = 100.0;
 
 /// Plant of a URDF model with a floating base: every revolute/prismatic joint is actuated
 /// through a rigid gear of [`URDF_GEAR_RATIO`]; `feet` name the sole links.
+///
+/// URDF has no rotor inertias, so the motor-side friction reflected through the gear
+/// (`N^2 tau_c / omega_eps` at rest: 50 N m s/rad with the defaults) would act on light links
+/// (a G1 ankle-roll subtree has ~4e-4 kg m^2) with rates far beyond any explicit step: the
+/// drives of URDF plants are lossless ([`crate::drive::FrictionParams::none`]), whatever
+/// `config.friction` says.
 pub fn urdf_plant(path: &Path, feet: &UrdfFeet, config: PlantConfig) -> Result<Plant, SimError> {
     let opts = UrdfOptions {
         floating: true,
@@ -206,6 +212,10 @@ pub fn urdf_plant(path: &Path, feet: &UrdfFeet, config: PlantConfig) -> Result<P
         reason: e.to_string(),
     })?;
     let m = &u.model;
+    let config = PlantConfig {
+        friction: crate::drive::FrictionParams::none(),
+        ..config
+    };
     let mut actuators = Vec::new();
     for b in m.bodies() {
         if matches!(

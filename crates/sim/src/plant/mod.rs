@@ -82,8 +82,9 @@ pub struct ActuatorInertia {
     /// Rigid inertia of all other bodies about the joint axis if the subtree holds a foot
     /// (what a stance joint moves, e.g. an ankle carrying the body), else 0.
     pub rest: f64,
-    /// Inertia the actuator drives directly when the subtree is free: `sub` for rigid drives,
-    /// the reflected motor inertia `N^2 J_m` for elastic gears.
+    /// Inertia the actuator drives when everything else moves freely too, `1 / (M^-1)_jj`
+    /// (at most `sub`; the decentralised PD's stability cap); for elastic gears the motor
+    /// coordinate's, times `N^2`.
     pub free: f64,
 }
 
@@ -300,15 +301,21 @@ impl Plant {
         q: &DVector<f64>,
     ) -> Result<Vec<ActuatorInertia>, SimError> {
         let m = biped_dynamics::mass_matrix(&self.model, &mut self.data, q)?.clone();
+        let minv = m.clone().cholesky().map(|c| c.inverse()).ok_or_else(|| {
+            SimError::InvalidParameter {
+                what: "mass matrix".into(),
+                reason: "not positive definite".into(),
+            }
+        })?;
         let mut out = Vec::with_capacity(self.actuators.len());
         for a in &self.actuators {
             let link = m[(a.joint_v, a.joint_v)];
             let (sub, free) = match a.transmission {
                 crate::drive::Transmission::Elastic { motor_v, ratio, .. } => {
                     let motor = ratio * ratio * m[(motor_v, motor_v)];
-                    (link + motor, motor)
+                    (link + motor, ratio * ratio / minv[(motor_v, motor_v)])
                 }
-                _ => (link, link),
+                _ => (link, 1.0 / minv[(a.joint_v, a.joint_v)]),
             };
             out.push(ActuatorInertia {
                 sub,

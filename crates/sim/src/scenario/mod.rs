@@ -50,7 +50,7 @@ impl std::str::FromStr for ScenarioKind {
 pub struct ScenarioOptions {
     /// Control period \[s] (default 1 ms).
     pub period: f64,
-    /// Duration \[s] (default: drop 2, stand 3, sway 2 sway periods + 1 s).
+    /// Duration \[s] (default: drop 4, stand 3, sway 2 sway periods + 1 s).
     pub duration: Option<f64>,
     /// PD bandwidth `w` \[rad/s] of [`JointPd::scaled`] (default 40).
     pub bandwidth: f64,
@@ -130,7 +130,7 @@ pub fn build(
     let mut controller = JointPd::scaled(plant, &q0, o.period, o.bandwidth, o.damping)?;
     let base = pose::base_height(plant, &q0);
     let (duration, criteria) = match kind {
-        ScenarioKind::Drop => (2.0, Criteria::drop(base)),
+        ScenarioKind::Drop => (4.0, Criteria::drop(base)),
         ScenarioKind::Stand => (3.0, Criteria::stand(base)),
         ScenarioKind::Sway => {
             let joints = o
