@@ -26,6 +26,8 @@ enum Command {
     Dynamics(cli::dynamics::DynamicsArgs),
     /// Calibrate absolute-encoder offsets from jig measurements (thesis 3.5).
     Calibrate(cli::calibrate::CalibrateArgs),
+    /// Simulate a scenario (stand, drop, sway) and write signals, plots and a summary.
+    Simulate(Box<cli::simulate::SimulateArgs>),
     /// Benchmarks of whole capabilities.
     #[command(subcommand)]
     Bench(cli::BenchCommand),
@@ -38,6 +40,7 @@ fn main() -> ExitCode {
         Command::Model(args) => cli::dynamics::run_model(args),
         Command::Dynamics(args) => cli::dynamics::run_dynamics(args),
         Command::Calibrate(args) => cli::calibrate::run(args),
+        Command::Simulate(args) => cli::simulate::run(*args),
         Command::Bench(cmd) => cli::run_bench(cmd),
     };
     match result {

@@ -2,6 +2,7 @@
 
 pub mod calibrate;
 pub mod dynamics;
+pub mod simulate;
 pub mod ssv;
 
 use clap::Subcommand;
