@@ -1,6 +1,7 @@
 //! `stand` on Lola Type 2 with RK4 at the 1 kHz control period (issue item 9): wall time of
 //! 0.2 s simulated (real-time factor = 0.2 s / time), and the parts of one right-hand side:
-//! the whole rhs, the forward dynamics alone, and the contact layer alone.
+//! the whole rhs, the forward dynamics alone, contact + drives without dynamics, and the
+//! contact layer alone.
 
 use biped_dynamics::{forward_dynamics, Algorithm, Data, Wrench};
 use biped_robots::lola::LolaType;
@@ -42,6 +43,11 @@ fn stand(c: &mut Criterion) {
     let mut g = c.benchmark_group("rhs_parts_lola_type2");
     g.bench_function("plant rhs", |b| {
         b.iter(|| plant.rhs(0.0, black_box(&z), &mut zdot).unwrap())
+    });
+    g.bench_function("contact + drives, no dynamics (Plant::outputs)", |b| {
+        b.iter(|| {
+            plant.outputs(black_box(&z)).unwrap();
+        })
     });
     let l = plant.layout();
     let (q, v) = (

@@ -204,3 +204,55 @@ fn cascaded_position_over_current_loop_reaches_the_target() {
     assert!((q - 0.5).abs() < 1e-4, "position {q}");
     assert!(sim.state()[1].abs() < 1e-2, "speed {}", sim.state()[1]);
 }
+
+/// The motor-rate rows of Lola's roller-screw rotors (knee, ankles) equal the finite-difference
+/// spin rate of the rotor part's pose about its own z axis, and the rigid gears' rows equal N.
+#[test]
+fn lola_motor_rows_match_finite_differences_of_the_rotor_pose() {
+    use biped_dynamics::mechanism::Coupling;
+    use biped_robots::lola::LolaType;
+    use biped_sim::plant::lola_plant;
+    let lp = lola_plant(LolaType::Type2, PlantConfig::default()).unwrap();
+    let plant = &lp.plant;
+    let m = plant.model();
+    let mut q = m.neutral();
+    for l in &lp.lola.limits {
+        q[l.q_index] = 0.3 * l.lower + 0.7 * l.upper;
+    }
+    let mut rotors = 0;
+    for a in plant.actuators() {
+        let row = a.motor_row(m, q.as_slice()).unwrap();
+        match a.transmission {
+            Transmission::Gear { ratio } => {
+                let entries: Vec<_> = row.unwrap().entries().collect();
+                assert_eq!(entries, vec![(a.joint_v, ratio)]);
+            }
+            Transmission::Rotor { body, q_in, n, .. } => {
+                rotors += 1;
+                let JointModel::Coupled { mechanism, .. } = m.bodies()[body].joint() else {
+                    panic!()
+                };
+                let row: Vec<_> = row.unwrap().entries().collect();
+                let eps = 1e-6;
+                for k in 0..n {
+                    let mut qp: Vec<f64> = (0..n).map(|i| q[q_in[i]]).collect();
+                    let mut qm = qp.clone();
+                    qp[k] += eps;
+                    qm[k] -= eps;
+                    let zeros = vec![0.0; n];
+                    let rp = mechanism.motion(&qp, &zeros).unwrap().pose.rotation;
+                    let rm = mechanism.motion(&qm, &zeros).unwrap().pose.rotation;
+                    let spin = (rm.inverse() * rp).scaled_axis().z / (2.0 * eps);
+                    assert!(
+                        (spin - row[k].1).abs() < 1e-5 * spin.abs().max(1.0),
+                        "{}: {spin} vs {}",
+                        a.name,
+                        row[k].1
+                    );
+                }
+            }
+            _ => {}
+        }
+    }
+    assert_eq!(rotors, 6, "2 knee and 4 ankle screw rotors");
+}

@@ -60,3 +60,24 @@ fn stand_type3_comes_to_rest_and_carries_its_weight() {
     assert_eq!(s.layout.table_2_3(), [47, 32, 0, 127]);
     assert!(s.passed(), "{:?}", s.checks);
 }
+
+#[test]
+fn stand_type2_in_current_mode_with_an_ideal_current_loop() {
+    let config = PlantConfig {
+        mode: DriveMode::Current,
+        ..PlantConfig::default()
+    };
+    let mut lp = lola_plant(LolaType::Type2, config).unwrap();
+    let sc = build(ScenarioKind::Stand, &mut lp.plant, &ScenarioOptions::lola()).unwrap();
+    let plant = lp.plant;
+    let (p2, q0) = (plant.clone(), sc.q0.clone());
+    let wrap = |pd: biped_sim::controller::JointPd| pd.with_current_output(&p2, &q0);
+    let (s, _) = sc
+        .run_wrapped(plant, wrap, Method::Rk4, Settings::fixed(1e-3), &mut |_| {
+            Ok(())
+        })
+        .unwrap();
+    println!("{}", serde_json::to_string_pretty(&s.checks).unwrap());
+    assert_eq!(s.drive_mode, DriveMode::Current);
+    assert!(s.passed(), "{:?}", s.checks);
+}

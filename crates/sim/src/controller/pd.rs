@@ -7,7 +7,7 @@ use crate::drive::{DriveMode, Transmission};
 use crate::error::{finite, positive, SimError};
 use crate::plant::Plant;
 use crate::sensors::Sensors;
-use nalgebra::DVector;
+use nalgebra::{DMatrix, DVector};
 
 /// Joint reference trajectory: writes `q_ref(t)` (one per actuator) into the slice.
 pub type Trajectory = Box<dyn FnMut(f64, &mut [f64]) + Send>;
@@ -19,8 +19,8 @@ pub struct JointPd {
     kp: Vec<f64>,
     kd: Vec<f64>,
     trajectory: Option<Trajectory>,
-    /// Torque-to-command factor per actuator (1 for torque, `1 / (k_t n)` for current).
-    scale: Vec<f64>,
+    /// Current mode: joint torques -> commands map and `(tau, out)` buffers.
+    current_map: Option<(DMatrix<f64>, DVector<f64>, DVector<f64>)>,
     /// Per actuator: `Some(N)` feeds back the motor encoder divided by `N` (collocated control
     /// of an elastic gear), `None` the joint encoder.
     motor_feedback: Vec<Option<f64>>,
@@ -65,7 +65,7 @@ impl JointPd {
             kp,
             kd,
             trajectory: None,
-            scale: vec![1.0; n],
+            current_map: None,
             motor_feedback: vec![None; n],
             mode: DriveMode::Torque,
         })
@@ -122,16 +122,29 @@ impl JointPd {
         self
     }
 
-    /// Outputs motor currents `tau / (k_t n_nominal)` for a plant in current mode (the ankle's
-    /// coupled screws are mapped per actuator with their nominal ratio: an approximation).
-    pub fn with_current_output(mut self, plant: &Plant) -> Self {
-        self.scale = plant
-            .actuators()
-            .iter()
-            .map(|a| 1.0 / (a.motor.torque_constant * a.nominal_ratio))
-            .collect();
+    /// Outputs motor currents for a plant in current mode: the joint torques `tau` become
+    /// motor torques `A^-1 tau` through the transmission matrix `A` of
+    /// [`Plant::transmission_matrix`] at `q0` (the two ankle screws drive both ankle joints),
+    /// divided by `k_t` (direct joints keep torque commands).
+    pub fn with_current_output(
+        mut self,
+        plant: &Plant,
+        q0: &DVector<f64>,
+    ) -> Result<Self, SimError> {
+        let a = plant.transmission_matrix(q0)?;
+        let n = a.nrows();
+        let mut map = a.try_inverse().ok_or_else(|| SimError::InvalidParameter {
+            what: "transmission matrix".into(),
+            reason: "singular at q0".into(),
+        })?;
+        for (k, act) in plant.actuators().iter().enumerate() {
+            if act.transmission != Transmission::Direct {
+                map.row_mut(k).scale_mut(1.0 / act.motor.torque_constant);
+            }
+        }
+        self.current_map = Some((map, DVector::zeros(n), DVector::zeros(n)));
         self.mode = DriveMode::Current;
-        self
+        Ok(self)
     }
 
     /// Current joint reference.
@@ -178,7 +191,12 @@ impl Controller for JointPd {
                 None => (s.joint_positions[j], s.joint_velocities[j]),
             };
             let tau = self.kp[j] * (self.target[j] - q) - self.kd[j] * qd;
-            c.values[j] = tau * self.scale[j];
+            c.values[j] = tau;
+        }
+        if let Some((map, tau, out)) = self.current_map.as_mut() {
+            tau.as_mut_slice().copy_from_slice(&c.values);
+            map.mul_to(tau, out);
+            c.values.copy_from_slice(out.as_slice());
         }
         c.mode = self.mode;
         Ok(())

@@ -295,6 +295,31 @@ impl Plant {
         self.qdot.floating_base()
     }
 
+    /// Transmission matrix `A` at `q`: joint torque of actuator `j` = `sum_k A[j][k] tau_m,k`
+    /// (steady state), from the motor rows (`N` for rigid and elastic gears, the screw
+    /// Jacobians for knee and ankles, 1 for direct joints).
+    pub fn transmission_matrix(
+        &self,
+        q: &DVector<f64>,
+    ) -> Result<nalgebra::DMatrix<f64>, SimError> {
+        let n = self.actuators.len();
+        let mut a = nalgebra::DMatrix::zeros(n, n);
+        for (k, act) in self.actuators.iter().enumerate() {
+            match (act.transmission, act.motor_row(&self.model, q.as_slice())?) {
+                (crate::drive::Transmission::Elastic { ratio, .. }, _) => a[(k, k)] = ratio,
+                (_, None) => a[(k, k)] = 1.0,
+                (_, Some(row)) => {
+                    for (v, c) in row.entries() {
+                        if let Some(j) = self.actuators.iter().position(|x| x.joint_v == v) {
+                            a[(j, k)] = c;
+                        }
+                    }
+                }
+            }
+        }
+        Ok(a)
+    }
+
     /// Inertias seen by each actuator at `q` (see [`ActuatorInertia`]).
     pub fn actuator_inertias(
         &mut self,

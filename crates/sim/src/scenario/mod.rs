@@ -221,8 +221,24 @@ impl Scenario {
         settings: Settings,
         observer: &mut dyn FnMut(&Frame) -> Result<(), SimError>,
     ) -> Result<(Summary, Simulation<JointPd>), SimError> {
+        self.run_wrapped(plant, Ok, method, settings, observer)
+    }
+
+    /// Like [`Self::run_with`] with the scenario's PD wrapped by `wrap` into another
+    /// controller, e.g. for current or voltage mode:
+    /// `|pd| Cascade::new(pd, CurrentPi::new(&plant, 1e-4, kp, ki)?, n)` (then `settings.h`
+    /// must resolve the electrical time constant, see [`crate::drive`]).
+    pub fn run_wrapped<C: Controller>(
+        self,
+        plant: Plant,
+        wrap: impl FnOnce(JointPd) -> Result<C, SimError>,
+        method: Method,
+        settings: Settings,
+        observer: &mut dyn FnMut(&Frame) -> Result<(), SimError>,
+    ) -> Result<(Summary, Simulation<C>), SimError> {
         let base = plant.floating_base();
-        let mut sim = Simulation::with_settings(plant, self.controller, method, settings, self.z0)?;
+        let controller = wrap(self.controller)?;
+        let mut sim = Simulation::with_settings(plant, controller, method, settings, self.z0)?;
         let mut tracker = Tracker::new(base.map(|(qi, _)| qi));
         let mut obs = |f: &Frame| {
             tracker.observe(f);
