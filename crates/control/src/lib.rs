@@ -12,6 +12,7 @@ pub mod ik;
 pub mod momentum;
 pub mod pattern;
 pub mod tasks;
+pub mod walk;
 
 pub use error::IkError;
 pub use ik::Weight;

@@ -19,7 +19,7 @@ use crate::error::IkError;
 use crate::ik::blend::Activation;
 use crate::ik::orientation::orientation_error;
 use crate::ik::TaskMap;
-use biped_dynamics::{Centroidal, Data, JacobianFrame, Jacobians, Model};
+use biped_dynamics::{Centroidal, Data, JacobianFrame, Jacobians, JointModel, Model};
 use biped_robots::lola::LolaModel;
 use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Vector3};
 
@@ -123,6 +123,16 @@ impl LolaTasks {
         &self.model
     }
 
+    /// Kinematics of the last evaluation: joint data (poses) and all body Jacobian columns.
+    pub fn kinematics(&self) -> (&Data, &Jacobians) {
+        (&self.data, &self.jac)
+    }
+
+    /// Centroidal quantities (CoM, `A_G`, hence `J_L` (7.2)) of the last evaluation.
+    pub fn centroidal(&self) -> &Centroidal {
+        &self.cen
+    }
+
     /// Requests switching task `id` on or off (ramped by [`Self::advance`]).
     pub fn switch(&mut self, id: TaskId, on: bool) {
         self.activation[id.index()].switch(on);
@@ -163,8 +173,9 @@ impl LolaTasks {
     fn measure(&mut self, q: &DVector<f64>) -> Result<Measured, IkError> {
         let kin = |e: biped_dynamics::JacobianError| IkError::Kinematics(e.to_string());
         self.cen
-            .com_jacobian(&self.model, &mut self.data, q, &mut self.jc)
+            .compute_matrix(&self.model, &mut self.data, q)
             .map_err(kin)?;
+        com_jacobian_from_ag(self.cen.ag().map_err(kin)?, self.cen.mass(), &mut self.jc);
         self.jac
             .compute(&self.model, &mut self.data, q)
             .map_err(kin)?;
@@ -321,7 +332,8 @@ impl TaskMap for LolaTasks {
         Some(&self.soft)
     }
 
-    /// `q (+) v step` with the quaternion base integrated on SE(3) (allocates one vector).
+    /// `q (+) v step` with quaternion free joints integrated on SE(3) (constant body twist, as
+    /// [`biped_dynamics::integrate`]), written into `out` without allocation.
     fn retract(
         &self,
         q: &DVector<f64>,
@@ -329,17 +341,38 @@ impl TaskMap for LolaTasks {
         step: f64,
         out: &mut DVector<f64>,
     ) -> Result<(), IkError> {
-        let next = biped_dynamics::integrate(&self.model, q, v, step)
-            .map_err(|e| IkError::Kinematics(e.to_string()))?;
-        crate::ik::linalg::check_dim("retract output", next.len(), out.len())?;
-        out.copy_from(&next);
-        Ok(())
+        crate::ik::linalg::check_dim("retract q", self.model.nq(), q.len())?;
+        crate::ik::linalg::check_dim("retract v", self.model.nv(), v.len())?;
+        crate::ik::linalg::check_dim("retract output", q.len(), out.len())?;
+        out.copy_from(q);
+        for b in self.model.bodies().iter().filter(|b| b.owns_coordinates()) {
+            let (qi, vi) = (b.q_index(), b.v_index());
+            match b.joint() {
+                JointModel::FreeQuaternion => super::se3::integrate_free(q, v, qi, vi, step, out),
+                jm => {
+                    for c in 0..jm.nv() {
+                        out[qi + c] += v[vi + c] * step;
+                    }
+                }
+            }
+        }
+        crate::ik::linalg::check_finite("retract output", out.as_slice())
     }
 }
 
 /// Rotation of the planning frame: yaw about the inertial vertical.
 fn planning_rotation(yaw: f64) -> Matrix3<f64> {
     Rotation3::from_axis_angle(&Vector3::z_axis(), yaw).into_inner()
+}
+
+/// `J_C` (3 x nv) from the centroidal momentum matrix `A_G = [J_L; m J_C]`.
+fn com_jacobian_from_ag(ag: &DMatrix<f64>, mass: f64, jc: &mut DMatrix<f64>) {
+    let inv = 1.0 / mass;
+    for (dst, col) in jc.as_mut_slice().chunks_exact_mut(3).zip(ag.as_slice().chunks_exact(6)) {
+        for r in 0..3 {
+            dst[r] = col[3 + r] * inv;
+        }
+    }
 }
 
 /// `out[r..r+3, :] = rot * (a[ra..ra+3, :] - b[rb..rb+3, :])` (b optional).

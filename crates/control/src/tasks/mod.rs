@@ -7,6 +7,7 @@
 
 mod lola;
 mod pose;
+mod se3;
 mod targets;
 
 pub use lola::LolaTasks;

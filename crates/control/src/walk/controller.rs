@@ -1,0 +1,396 @@
+//! [`WalkController`]: one 1 kHz IK cycle of Lola over a walking-pattern sample (thesis 4.5,
+//! 5.2, 7.3-7.5): targets, closed-loop task velocities (4.13)-(4.16), Klein-Huang RMRC
+//! (Alg. 4.3) with null-space gradient `grad H_J + grad H_C` (+ compensation) and the
+//! method's weight, and the SE(3) integration of q. Everything is preallocated in `new`.
+
+use super::error::{model_err, WalkError};
+use super::method::{Method, WalkParams};
+use super::targets::{legs, set_targets};
+use crate::avoidance::{AvoidanceParams, AvoidanceSummary, CollisionAvoidance};
+use crate::ik::joint_cost::JointCost;
+use crate::ik::{Rmrc, RmrcProblem, TaskBuffers, TaskMap, Weight};
+use crate::momentum::{
+    vertical_inertia, ArmSwing, ArmSwingNominal, ArmTargets, Compensation, CompensationLaw,
+    MomentumMinimisation, MomentumReference, PointTarget, VerticalMomentum, LOLA_ARMS,
+};
+use crate::pattern::fit::{bent_knee_pose, standing_com_height};
+use crate::pattern::{PatternParams, PatternSample, WalkingPattern};
+use crate::tasks::{lola_joint_cost, standing_configuration, LolaTasks, TaskId};
+use biped_dynamics::{Data, Jacobians};
+use biped_robots::lola::{lola_collision_model, LolaModel};
+use nalgebra::{DVector, Vector3};
+
+/// What one cycle did.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CycleInfo {
+    /// Active task rows m.
+    pub rows: usize,
+    /// Norm of the task error before the step.
+    pub error_norm: f64,
+    /// Collision avoidance summary (`None` with avoidance off).
+    pub avoidance: Option<AvoidanceSummary>,
+}
+
+/// Lola's walking IK with one arm method (see [`Method`]).
+#[derive(Debug, Clone)]
+pub struct WalkController {
+    method: Method,
+    params: WalkParams,
+    tasks: LolaTasks,
+    buf: TaskBuffers,
+    rmrc: Rmrc,
+    xcmd: DVector<f64>,
+    grad: DVector<f64>,
+    grad_c: DVector<f64>,
+    weight: Weight,
+    cost: JointCost,
+    avoid: Option<CollisionAvoidance>,
+    vm: VerticalMomentum,
+    comp: Compensation,
+    minim: MomentumMinimisation,
+    reference: MomentumReference,
+    swing: ArmSwing,
+    com_offset: Vector3<f64>,
+    arm_pivot: [ArmPivot; 2],
+    shoulders: [usize; 2],
+    step: usize,
+    step_turn: (f64, f64),
+    q: DVector<f64>,
+    q_eval: DVector<f64>,
+    q_next: DVector<f64>,
+    qdot: DVector<f64>,
+}
+
+impl WalkController {
+    /// Controller for `lola` standing on the first footprints of `pattern`, after
+    /// `params.settle_time` of IK cycles on its first sample.
+    pub fn new(
+        lola: &LolaModel,
+        method: Method,
+        params: WalkParams,
+        pattern: &WalkingPattern,
+    ) -> Result<Self, WalkError> {
+        let dt = pattern.params().dt;
+        params.validate(dt)?;
+        let first = pattern.sample(0).ok_or(WalkError::InvalidParameter {
+            name: "pattern",
+            reason: "has no samples".into(),
+        })?;
+        let model = &lola.model;
+        let nv = model.nv();
+        let mut tasks = LolaTasks::new(lola, 0.2)?;
+        let q = place_on_footprints(lola, &mut tasks, first)?;
+        tasks.set_targets_from(&q)?;
+        let com_offset = tasks.targets.cog - first.com;
+        let arm_on = method.arm_tasks();
+        tasks.set_active_now(TaskId::RightArmCoG, arm_on);
+        tasks.set_active_now(TaskId::LeftArmCoG, arm_on);
+        let [right_leg, left_leg] = legs(first, &com_offset).map(|l| l.position);
+        let nominal = ArmSwingNominal {
+            left_arm: tasks.targets.arm_cog[1],
+            right_arm: tasks.targets.arm_cog[0],
+            left_leg,
+            right_leg,
+        };
+        let swing = ArmSwing::with_mask(params.arm_swing_scale, Vector3::x(), nominal)?;
+        let cost = lola_joint_cost(
+            lola,
+            &q,
+            params.comfort_weight,
+            params.limit_weight,
+            params.limit_margin,
+        )?;
+        let avoid = if params.avoidance {
+            let segments = lola_collision_model(lola).map_err(model_err)?.model;
+            Some(CollisionAvoidance::new(model, segments, AvoidanceParams::default())?)
+        } else {
+            None
+        };
+        let minim = MomentumMinimisation::new(params.minimization_delta)?;
+        let weight = match method {
+            Method::Minimization => minim.weight(nv)?,
+            Method::None => arm_lock_weight(lola, params.arm_lock_weight)?,
+            _ => Weight::Identity,
+        };
+        let comp = Compensation::new(model, &LOLA_ARMS, CompensationLaw::Exact)?
+            .with_gain(params.compensation_gain)?;
+        let izz = vertical_inertia(model, &mut Data::new(model), &q)?;
+        let shoulders = [body(lola, "r_shoulder")?, body(lola, "l_shoulder")?];
+        let arm_pivot = arm_pivots(&tasks, &shoulders);
+        let mut ctrl = Self {
+            arm_pivot,
+            shoulders,
+            method,
+            params,
+            buf: TaskBuffers::new(&tasks),
+            rmrc: Rmrc::new(TaskId::TOTAL_ROWS, nv),
+            xcmd: DVector::zeros(TaskId::TOTAL_ROWS),
+            grad: DVector::zeros(nv),
+            grad_c: DVector::zeros(nv),
+            weight,
+            cost,
+            avoid,
+            vm: VerticalMomentum::new(model),
+            comp,
+            minim,
+            reference: MomentumReference::new(izz)?,
+            swing,
+            com_offset,
+            step: first.step,
+            step_turn: (pattern.params().step_time, pattern.params().turn_angle),
+            q_eval: q.clone(),
+            q_next: q.clone(),
+            qdot: DVector::zeros(nv),
+            q,
+            tasks,
+        };
+        let settle = (params.settle_time / dt).round() as usize;
+        for _ in 0..settle {
+            ctrl.cycle(first, dt)?;
+        }
+        ctrl.qdot.fill(0.0);
+        Ok(ctrl)
+    }
+
+    /// One IK cycle over pattern sample `s` with period `dt`: q moves to the next cycle.
+    pub fn cycle(&mut self, s: &PatternSample, dt: f64) -> Result<CycleInfo, WalkError> {
+        self.set_sample_targets(s)?;
+        self.tasks.advance(dt);
+        self.q_eval.copy_from(&self.q);
+        self.buf.evaluate(&mut self.tasks, &self.q)?;
+        self.cost.gradient_into(&self.q, &mut self.grad)?;
+        let scale = match self.method {
+            Method::Minimization => self.params.minimization_delta,
+            _ => 1.0,
+        };
+        self.grad *= self.params.alpha_n * scale;
+        let avoidance = match &mut self.avoid {
+            Some(a) => {
+                let (data, jac) = self.tasks.kinematics();
+                self.grad_c.fill(0.0);
+                let sum = a.gradient(self.tasks.model(), data, jac, &mut self.grad_c)?;
+                self.grad.axpy(self.params.avoidance_gain * scale, &self.grad_c, 1.0);
+                Some(sum)
+            }
+            None => None,
+        };
+        self.vm.update(self.tasks.centroidal())?;
+        match self.method {
+            Method::Compensation => {
+                let l_ref = self.reference.sample(s.t).0;
+                let jlz = self.vm.jacobian_z();
+                self.comp.add_to(jlz, &self.qdot, l_ref, &mut self.grad)?;
+            }
+            Method::Minimization => self.minim.update(self.vm.jacobian_z(), &mut self.weight)?,
+            _ => {}
+        }
+        self.solve()?;
+        self.tasks
+            .retract(&self.q, &self.qdot, dt, &mut self.q_next)?;
+        std::mem::swap(&mut self.q, &mut self.q_next);
+        Ok(CycleInfo {
+            rows: self.buf.rows,
+            error_norm: self.buf.error_norm(),
+            avoidance,
+        })
+    }
+
+    /// Targets of sample `s` (arm CoG targets for the reference method, `L_ref` per step).
+    fn set_sample_targets(&mut self, s: &PatternSample) -> Result<(), WalkError> {
+        let arms: Option<ArmTargets> = if self.method.arm_tasks() {
+            let [right, left] = legs(s, &self.com_offset);
+            let mut a = self.swing.targets(&left, &right)?;
+            let shoulders = self.shoulders_now()?;
+            for (slot, arm) in [&mut a.right, &mut a.left].into_iter().enumerate() {
+                swing_on_circle(arm, &self.arm_pivot[slot], &shoulders[slot]);
+            }
+            Some(a)
+        } else {
+            None
+        };
+        if s.step != self.step {
+            self.step = s.step;
+                let (t_step, turn) = self.step_turn;
+            self.reference.start_step(s.t, t_step, turn)?;
+        }
+        set_targets(s, &self.com_offset, arms.as_ref(), &mut self.tasks.targets);
+        Ok(())
+    }
+
+    /// Shoulder positions (right, left) relative to the CoG in the planning frame, from the
+    /// last evaluation.
+    fn shoulders_now(&self) -> Result<[Vector3<f64>; 2], WalkError> {
+        let (data, _) = self.tasks.kinematics();
+        let c = self.tasks.centroidal().com();
+        let yaw = self.tasks.targets.planning_yaw;
+        let rpt = nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), -yaw);
+        Ok(self.shoulders.map(|b| rpt * (data.world_pos[b] - c)))
+    }
+
+    /// `xd_cmd = xd_d + K_x dx` (4.14b), then (4.12) by Alg. 4.3 into `qdot`.
+    fn solve(&mut self) -> Result<(), WalkError> {
+        let m = self.buf.rows;
+        self.tasks.feedforward(&mut self.xcmd);
+        for i in 0..m {
+            self.xcmd[i] += self.params.gain * self.buf.err[i];
+        }
+        let p = RmrcProblem {
+            jacobian: &self.buf.jac,
+            rows: m,
+            xdot: &self.xcmd,
+            weight: &self.weight,
+            null_space: Some((&self.grad, 1.0)),
+            damping: 0.0,
+            softness: self.tasks.softness(),
+        };
+        self.rmrc.solve(&p, &mut self.qdot)?;
+        Ok(())
+    }
+
+    /// The method.
+    pub fn method(&self) -> Method {
+        self.method
+    }
+
+    /// Configuration for the next cycle.
+    pub fn q(&self) -> &DVector<f64> {
+        &self.q
+    }
+
+    /// Configuration at which the last cycle evaluated tasks and momentum.
+    pub fn q_eval(&self) -> &DVector<f64> {
+        &self.q_eval
+    }
+
+    /// Joint velocities of the last cycle (at [`Self::q_eval`]).
+    pub fn qdot(&self) -> &DVector<f64> {
+        &self.qdot
+    }
+
+    /// `J_Lz^T` at [`Self::q_eval`] (7.2).
+    pub fn jlz(&self) -> &DVector<f64> {
+        self.vm.jacobian_z()
+    }
+
+    /// The task set (targets, activations, model).
+    pub fn tasks(&self) -> &LolaTasks {
+        &self.tasks
+    }
+
+    /// Kinematics at [`Self::q_eval`].
+    pub fn kinematics(&self) -> (&Data, &Jacobians) {
+        self.tasks.kinematics()
+    }
+}
+
+/// Standing configuration with the sole midpoint on the pattern's first footprints' midpoint.
+fn place_on_footprints(
+    lola: &LolaModel,
+    tasks: &mut LolaTasks,
+    first: &PatternSample,
+) -> Result<DVector<f64>, WalkError> {
+    let mut q = walk_start_configuration(lola)?;
+    tasks.set_targets_from(&q)?;
+    let (data, _) = tasks.kinematics();
+    let sole = |n: &str| {
+        let id = lola.model.body_id(n).ok_or_else(|| model_err(format!("no body {n}")))?;
+        Ok::<_, WalkError>(data.world_pos[id])
+    };
+    let model_mid = 0.5 * (sole("l_sole")? + sole("r_sole")?);
+    let pattern_mid = 0.5
+        * (first.feet[0].pose.translation.vector + first.feet[1].pose.translation.vector);
+    let shift = pattern_mid - model_mid;
+    for k in 0..3 {
+        q[k] += shift[k];
+    }
+    Ok(q)
+}
+
+/// Knee bend of the walking posture \[rad]: low enough that a 0.4 m step keeps the stance
+/// knee bent (at 0.5 rad the leg stretches into the knee singularity at the end of a step).
+pub const WALK_KNEE: f64 = 0.9;
+
+/// Elbow angle of the walking posture \[rad]: bent, away from the stretched-arm singularity
+/// of the 3-D arm CoG task (a hanging straight arm cannot move its CoG vertically).
+pub const WALK_ELBOW: f64 = -0.8;
+
+/// Start posture: the flat-footed bent-knee pose of [`WALK_KNEE`] with the arms of
+/// [`standing_configuration`] and the elbows at [`WALK_ELBOW`].
+pub fn walk_start_configuration(lola: &LolaModel) -> Result<DVector<f64>, WalkError> {
+    let mut q = bent_knee_pose(lola, WALK_KNEE)?;
+    let stand = standing_configuration(lola);
+    for name in LOLA_ARMS {
+        let l = lola.limits.iter().find(|l| l.name == name);
+        let i = l.ok_or_else(|| model_err(format!("no joint {name}")))?.q_index;
+        q[i] = if name.ends_with("forearm") { WALK_ELBOW } else { stand[i] };
+    }
+    Ok(q)
+}
+
+/// Pattern parameters for `lola` walking in the [`WALK_KNEE`] posture: the default pattern
+/// with `n_steps`, `step_length`, `step_time` and the LIPM height of that posture.
+pub fn walk_pattern_params(
+    lola: &LolaModel,
+    n_steps: usize,
+    step_length: f64,
+    step_time: f64,
+) -> Result<PatternParams, WalkError> {
+    Ok(PatternParams {
+        n_steps,
+        step_length,
+        step_time,
+        com_height: standing_com_height(lola, WALK_KNEE)?,
+        ..PatternParams::default()
+    })
+}
+
+/// Nominal arm CoG relative to the CoG, and relative to its shoulder with the distance
+/// `rho` in the sagittal (x-z) plane.
+#[derive(Debug, Clone, Copy)]
+struct ArmPivot {
+    nominal: Vector3<f64>,
+    arm: Vector3<f64>,
+    rho: f64,
+}
+
+/// Body index by name.
+fn body(lola: &LolaModel, name: &str) -> Result<usize, WalkError> {
+    lola.model.body_id(name).ok_or_else(|| model_err(format!("no body {name}")))
+}
+
+/// [`ArmPivot`]s (right, left) at the configuration of `tasks`' last evaluation.
+fn arm_pivots(tasks: &LolaTasks, shoulders: &[usize; 2]) -> [ArmPivot; 2] {
+    let (data, _) = tasks.kinematics();
+    let t = &tasks.targets;
+    [0, 1].map(|slot| {
+        let arm = t.arm_cog[slot] - (data.world_pos[shoulders[slot]] - t.cog);
+        ArmPivot {
+            nominal: t.arm_cog[slot],
+            arm,
+            rho: (arm.x * arm.x + arm.z * arm.z).sqrt(),
+        }
+    })
+}
+
+/// Reference method: the swing offset of [`ArmSwing`] moves the arm CoG fore-aft about the
+/// *current* shoulder (relative to the CoG, planning frame, from the last evaluation) on a
+/// circle of radius `rho` in the sagittal plane. A target fixed relative to the CoG would
+/// make the arm chase the CoG shifts of the swinging legs and stretch the elbow into the
+/// singularity of the 3-D arm CoG task.
+fn swing_on_circle(arm: &mut PointTarget, p: &ArmPivot, shoulder: &Vector3<f64>) {
+    let x = (p.arm.x + arm.position.x - p.nominal.x).clamp(-0.9 * p.rho, 0.9 * p.rho);
+    let z = (p.rho * p.rho - x * x).sqrt();
+    arm.position = shoulder + Vector3::new(x, p.arm.y, -z);
+    arm.velocity.z = x * arm.velocity.x / z;
+}
+
+/// Diagonal weight: 1 except `lock` on the six arm joints (the `none` method).
+fn arm_lock_weight(lola: &LolaModel, lock: f64) -> Result<Weight, WalkError> {
+    let mut d = DVector::from_element(lola.model.nv(), 1.0);
+    for name in LOLA_ARMS {
+        let l = lola.limits.iter().find(|l| l.name == name);
+        let l = l.ok_or_else(|| model_err(format!("no joint {name}")))?;
+        d[l.v_index] = lock;
+    }
+    Ok(Weight::Diagonal(d))
+}

@@ -1,0 +1,155 @@
+//! Per-cycle evaluation of a walk (thesis 7.6, Fig. 7.1/7.4): vertical angular momentum about
+//! the CoM `L_z = J_Lz qd` (7.2), its rate (backward difference over the cycle), the vertical
+//! torque `tau_z` the stance foot must transmit, the smallest SSV segment distance and the
+//! smallest joint-limit margin.
+//!
+//! `tau_z`: inverse dynamics of the floating-base model at `(q, qd, qdd)` with `qdd` the
+//! backward difference of the IK velocities gives, in the free joint's entries, the wrench
+//! (body axes, about the base origin) the environment must apply to the base for this motion
+//! (the free joint transmits it from the world). Only the ground can supply it, so it is
+//! shifted to the stance sole point `p`: `M_p = R m + (o - p) x R f`, `tau_z = M_p,z`. In
+//! double support the total wrench is reported about the midpoint of the two soles (how it
+//! splits between the feet is not determined by the kinematics).
+
+use super::controller::WalkController;
+use super::error::{model_err, WalkError};
+use crate::avoidance::{AvoidanceParams, CollisionAvoidance};
+use crate::momentum::LzRate;
+use crate::pattern::{Foot, Phase};
+use biped_dynamics::{inverse_dynamics, Data, JointModel, Model};
+use biped_robots::lola::{lola_collision_model, LolaModel};
+use nalgebra::{DVector, Vector3};
+
+/// Metrics of one cycle (SI units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CycleMetrics {
+    /// Vertical angular momentum about the CoM \[N m s].
+    pub lz: f64,
+    /// Its rate (backward difference) \[N m].
+    pub dlz: f64,
+    /// Vertical torque at the stance sole (double support: sole midpoint) \[N m].
+    pub tau_z: f64,
+    /// Smallest SSV distance over all segment pairs \[m].
+    pub min_distance: f64,
+    /// Smallest distance of a joint to its nearer limit \[rad or m].
+    pub joint_margin: f64,
+}
+
+/// Preallocated evaluator (own dynamics workspace and collision model).
+#[derive(Debug, Clone)]
+pub struct Evaluator {
+    data: Data,
+    distances: CollisionAvoidance,
+    rate: LzRate,
+    dt: f64,
+    qdot_prev: DVector<f64>,
+    qdd: DVector<f64>,
+    started: bool,
+    root: usize,
+    soles: [usize; 2],
+    limits: Vec<(usize, f64, f64)>,
+}
+
+impl Evaluator {
+    /// Evaluator for `lola` with control period `dt`.
+    pub fn new(lola: &LolaModel, dt: f64) -> Result<Self, WalkError> {
+        let model = &lola.model;
+        let segments = lola_collision_model(lola).map_err(model_err)?.model;
+        let root = model
+            .bodies()
+            .iter()
+            .position(|b| matches!(b.joint(), JointModel::FreeQuaternion))
+            .ok_or_else(|| model_err("no quaternion floating base"))?;
+        let id = |n: &str| model.body_id(n).ok_or_else(|| model_err(format!("no body {n}")));
+        Ok(Self {
+            data: Data::new(model),
+            distances: CollisionAvoidance::new(model, segments, AvoidanceParams::default())?,
+            rate: LzRate::new(dt)?,
+            dt,
+            qdot_prev: DVector::zeros(model.nv()),
+            qdd: DVector::zeros(model.nv()),
+            started: false,
+            root,
+            soles: [id("l_sole")?, id("r_sole")?],
+            limits: lola
+                .limits
+                .iter()
+                .map(|l| (l.q_index, l.lower, l.upper))
+                .collect(),
+        })
+    }
+
+    /// Metrics of the cycle `ctrl` has just run, in support phase `phase`.
+    pub fn evaluate(
+        &mut self,
+        ctrl: &WalkController,
+        phase: Phase,
+    ) -> Result<CycleMetrics, WalkError> {
+        let (q, qdot) = (ctrl.q_eval(), ctrl.qdot());
+        let lz = ctrl.jlz().dot(qdot);
+        let dlz = self.rate.update(lz)?;
+        if self.started {
+            self.qdd.copy_from(qdot);
+            self.qdd -= &self.qdot_prev;
+            self.qdd /= self.dt;
+        }
+        self.started = true;
+        self.qdot_prev.copy_from(qdot);
+        let (kin, _) = ctrl.kinematics();
+        let point = match phase.stance_foot() {
+            Some(Foot::Left) => kin.world_pos[self.soles[0]],
+            Some(Foot::Right) => kin.world_pos[self.soles[1]],
+            None => 0.5 * (kin.world_pos[self.soles[0]] + kin.world_pos[self.soles[1]]),
+        };
+        let model = ctrl.tasks().model();
+        let (_, m) = wrench(model, &mut self.data, self.root, (q, qdot, &self.qdd), &point)?;
+        let tau_z = m.z;
+        self.distances.update(kin)?;
+        let min_distance = self
+            .distances
+            .global_minimum()
+            .map_or(f64::INFINITY, |(_, c)| c.result.distance);
+        let joint_margin = self
+            .limits
+            .iter()
+            .map(|&(i, lo, hi)| (q[i] - lo).min(hi - q[i]))
+            .fold(f64::INFINITY, f64::min);
+        Ok(CycleMetrics {
+            lz,
+            dlz,
+            tau_z,
+            min_distance,
+            joint_margin,
+        })
+    }
+
+    /// Total external wrench at `(q, v, a)` as (force, moment about `point`) in world axes:
+    /// the free-joint entries of the inverse dynamics (exposed for tests of the convention).
+    pub fn ground_wrench(
+        &mut self,
+        ctrl: &WalkController,
+        a: &DVector<f64>,
+        point: &Vector3<f64>,
+    ) -> Result<(Vector3<f64>, Vector3<f64>), WalkError> {
+        let model = ctrl.tasks().model();
+        let state = (ctrl.q_eval(), ctrl.qdot(), a);
+        wrench(model, &mut self.data, self.root, state, point)
+    }
+}
+
+/// Free-joint entries of the inverse dynamics at `(q, v, a)` as world-axes force and moment
+/// about `point` (see the module docs).
+fn wrench(
+    model: &Model,
+    data: &mut Data,
+    root: usize,
+    (q, v, a): (&DVector<f64>, &DVector<f64>, &DVector<f64>),
+    point: &Vector3<f64>,
+) -> Result<(Vector3<f64>, Vector3<f64>), WalkError> {
+    let tau = inverse_dynamics(model, data, q, v, a, None).map_err(model_err)?;
+    let f_body = Vector3::new(tau[0], tau[1], tau[2]);
+    let m_body = Vector3::new(tau[3], tau[4], tau[5]);
+    let (rot, origin) = (data.world_rot[root], data.world_pos[root]);
+    let f = rot * f_body;
+    Ok((f, rot * m_body + (origin - point).cross(&f)))
+}

@@ -1,0 +1,146 @@
+//! A whole walk with one method: time series of the metrics and their summary (Fig. 7.1/7.4).
+
+use super::controller::WalkController;
+use super::error::{model_err, WalkError};
+use super::evaluate::Evaluator;
+use super::method::{Method, WalkParams};
+use crate::pattern::WalkingPattern;
+use biped_robots::lola::LolaModel;
+use serde::Serialize;
+use std::time::Instant;
+
+/// Joints recorded in the time series: arms and pelvis.
+pub const RECORDED_JOINTS: [&str; 8] = [
+    "l_shoulder",
+    "l_upper_arm",
+    "l_forearm",
+    "r_shoulder",
+    "r_upper_arm",
+    "r_forearm",
+    "pelvis_rotation",
+    "torso",
+];
+
+/// Per-cycle signals of one walk (index = pattern sample).
+#[derive(Debug, Clone, Default)]
+pub struct WalkSeries {
+    /// Time \[s].
+    pub t: Vec<f64>,
+    /// `L_z` \[N m s].
+    pub lz: Vec<f64>,
+    /// `dL_z/dt` \[N m].
+    pub dlz: Vec<f64>,
+    /// Stance-foot vertical torque \[N m].
+    pub tau_z: Vec<f64>,
+    /// Smallest SSV distance \[m].
+    pub min_distance: Vec<f64>,
+    /// Smallest joint-limit margin.
+    pub joint_margin: Vec<f64>,
+    /// IK cycle wall time \[us].
+    pub ik_us: Vec<f64>,
+    /// Task error norm before each step.
+    pub task_error: Vec<f64>,
+    /// Angles of [`RECORDED_JOINTS`] (one row per cycle).
+    pub joints: Vec<[f64; 8]>,
+}
+
+/// Summary of one walk (keys of `summary.json`; SI units, distances in m).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct WalkSummary {
+    /// `max |L_z|` \[N m s].
+    #[serde(rename = "peak_abs_Lz")]
+    pub peak_abs_lz: f64,
+    /// `max |dL_z/dt|` \[N m].
+    #[serde(rename = "peak_abs_dLz")]
+    pub peak_abs_dlz: f64,
+    /// `max |tau_z|` \[N m].
+    pub peak_abs_tau_z: f64,
+    /// Smallest SSV distance over the walk \[m].
+    pub min_distance: f64,
+    /// Median IK cycle time \[us].
+    pub ik_us_median: f64,
+    /// 99th percentile IK cycle time \[us].
+    pub ik_us_p99: f64,
+    /// Smallest joint-limit margin over the walk.
+    pub min_joint_margin: f64,
+    /// Largest task error norm over the walk.
+    pub max_task_error: f64,
+    /// Number of cycles.
+    pub cycles: usize,
+}
+
+/// Result of [`run_walk`].
+#[derive(Debug, Clone)]
+pub struct WalkRun {
+    /// The method.
+    pub method: Method,
+    /// Time series.
+    pub series: WalkSeries,
+    /// Summary.
+    pub summary: WalkSummary,
+}
+
+/// Runs the IK over every sample of `pattern` with `method` and evaluates each cycle.
+pub fn run_walk(
+    lola: &LolaModel,
+    pattern: &WalkingPattern,
+    method: Method,
+    params: WalkParams,
+) -> Result<WalkRun, WalkError> {
+    let dt = pattern.params().dt;
+    let mut ctrl = WalkController::new(lola, method, params, pattern)?;
+    let mut eval = Evaluator::new(lola, dt)?;
+    let joints = RECORDED_JOINTS.map(|n| lola.limits.iter().find(|l| l.name == n));
+    let mut idx = [0; 8];
+    for (i, j) in idx.iter_mut().zip(joints) {
+        *i = j.ok_or_else(|| model_err("recorded joint missing"))?.q_index;
+    }
+    let n = pattern.len();
+    let mut s = WalkSeries::default();
+    for sample in pattern.iter() {
+        let start = Instant::now();
+        let info = ctrl.cycle(sample, dt)?;
+        s.ik_us.push(start.elapsed().as_secs_f64() * 1e6);
+        let m = eval.evaluate(&ctrl, sample.phase)?;
+        s.t.push(sample.t);
+        s.lz.push(m.lz);
+        s.dlz.push(m.dlz);
+        s.tau_z.push(m.tau_z);
+        s.min_distance.push(m.min_distance);
+        s.joint_margin.push(m.joint_margin);
+        s.task_error.push(info.error_norm);
+        s.joints.push(idx.map(|i| ctrl.q_eval()[i]));
+    }
+    let summary = summarize(&s, n);
+    Ok(WalkRun {
+        method,
+        series: s,
+        summary,
+    })
+}
+
+/// Peaks, minima and timing percentiles of a series.
+fn summarize(s: &WalkSeries, cycles: usize) -> WalkSummary {
+    let peak = |v: &[f64]| v.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
+    let min = |v: &[f64]| v.iter().copied().fold(f64::INFINITY, f64::min);
+    let mut us = s.ik_us.clone();
+    us.sort_by(f64::total_cmp);
+    let pct = |p: f64| {
+        if us.is_empty() {
+            0.0
+        } else {
+            us[((us.len() - 1) as f64 * p).round() as usize]
+        }
+    };
+    WalkSummary {
+        peak_abs_lz: peak(&s.lz),
+        peak_abs_dlz: peak(&s.dlz),
+        peak_abs_tau_z: peak(&s.tau_z),
+        min_distance: min(&s.min_distance),
+        ik_us_median: pct(0.5),
+        ik_us_p99: pct(0.99),
+        min_joint_margin: min(&s.joint_margin),
+        max_task_error: peak(&s.task_error),
+        cycles,
+    }
+}
