@@ -49,6 +49,10 @@ pub struct SimulateArgs {
     /// Hip and ankle adduction joints for `sway` on a URDF robot.
     #[arg(long, value_name = "HIP_L,HIP_R,ANKLE_L,ANKLE_R")]
     sway_joints: Option<String>,
+    /// Contact stiffness [N/m] and damping [N s/m] of each sole point, normal and tangential
+    /// (default: Lola 2e5,400; URDF 5e4,100 as URDF feet carry no rotor inertia).
+    #[arg(long, value_name = "K,D", allow_hyphen_values = true)]
+    contact: Option<String>,
     /// Initial joint angles [rad], e.g. `knee=0.4,hip=-0.2` (Lola: added to its bent-knee pose).
     #[arg(long, value_name = "JOINT=ANGLE,...", allow_hyphen_values = true)]
     pose: Option<String>,

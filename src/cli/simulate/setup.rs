@@ -18,6 +18,11 @@ type SetupError = Box<dyn std::error::Error>;
 /// Fixed step of Type 3 \[s]: its elastic gears (~9000 rad/s on the toe) need <= 0.25 ms.
 const TYPE3_STEP: f64 = 1e-4;
 
+/// Contact stiffness and damping per point of URDF robots \[N/m, N s/m]: their feet carry no
+/// reflected rotor inertia, so Lola's 2e5 / 400 puts the foot's damping eigenvalue
+/// (`8 d / m_foot`, ~5000 1/s on the G1) outside RK4's stability region at 1 ms.
+const URDF_CONTACT: [f64; 2] = [5e4, 100.0];
+
 /// Largest number of recorded rows reserved up front (longer runs grow the recorder).
 const MAX_RESERVED_ROWS: usize = 1 << 20;
 
@@ -71,7 +76,7 @@ impl Job {
             Some(path) => urdf_source(a, path, kind)?,
             None => {
                 urdf_only(a)?;
-                lola_source(a.lola.as_deref().unwrap_or("type2"))?
+                lola_source(a)?
             }
         };
         for (name, angle) in pose {
@@ -150,9 +155,10 @@ fn name(kind: ScenarioKind) -> &'static str {
 type Source = (Plant, ScenarioOptions, String, f64);
 
 /// The Lola-like biped of `crates/robots/data/lola.toml`.
-fn lola_source(text: &str) -> Result<Source, SetupError> {
+fn lola_source(a: &SimulateArgs) -> Result<Source, SetupError> {
+    let text = a.lola.as_deref().unwrap_or("type2");
     let variant: LolaType = text.parse().map_err(|e| format!("--lola: {e}"))?;
-    let lp = lola_plant(variant, PlantConfig::default())?;
+    let lp = lola_plant(variant, plant_config(a, None)?)?;
     let options = ScenarioOptions::lola();
     let step = match variant {
         LolaType::Type2 => options.period,
@@ -203,7 +209,8 @@ fn urdf_source(a: &SimulateArgs, path: &Path, kind: ScenarioKind) -> Result<Sour
         }
         (feet.length, feet.width) = (s[0], s[1]);
     }
-    let plant = urdf_plant(path, &feet, PlantConfig::default()).map_err(|e| match e {
+    let config = plant_config(a, Some(URDF_CONTACT))?;
+    let plant = urdf_plant(path, &feet, config).map_err(|e| match e {
         SimError::InvalidParameter { what, reason } if what == "urdf" => reason,
         e @ SimError::Unknown { .. } => format!("--feet: {e} in {}", path.display()),
         e => format!("{}: {e}", path.display()),
@@ -229,6 +236,29 @@ fn urdf_source(a: &SimulateArgs, path: &Path, kind: ScenarioKind) -> Result<Sour
     };
     let step = options.period;
     Ok((plant, options, path.display().to_string(), step))
+}
+
+/// Plant options: `--contact K,D` (else `default` or the library's contact law).
+fn plant_config(a: &SimulateArgs, default: Option<[f64; 2]>) -> Result<PlantConfig, SetupError> {
+    let mut config = PlantConfig::default();
+    let kd = match &a.contact {
+        Some(text) => {
+            let v = numbers(text, 2, "--contact")?;
+            if v[0] <= 0.0 || v[1] < 0.0 {
+                return Err(
+                    format!("--contact: need stiffness > 0 and damping >= 0, got {text}").into(),
+                );
+            }
+            Some([v[0], v[1]])
+        }
+        None => default,
+    };
+    if let Some([k, d]) = kd {
+        let c = &mut config.contact;
+        (c.stiffness, c.damping) = (k, d);
+        (c.tangential_stiffness, c.tangential_damping) = (k, d);
+    }
+    Ok(config)
 }
 
 /// Integrator settings and the step rule from `--step` / `--tolerances`.

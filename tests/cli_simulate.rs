@@ -1,0 +1,379 @@
+//! End-to-end tests of `biped simulate`: outputs and their consistency (CSV vs summary, per-foot
+//! forces vs total, contact force vs the weight from the model's masses), the integrators' step
+//! and rhs counts, the URDF path (Unitree G1), integrator failure and one-line input errors.
+
+mod common;
+
+use biped_robots::lola::{self, LolaType};
+use common::run;
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+/// Runs `biped simulate ARGS --out <tmp>/<name>`; returns the output and the folder.
+fn simulate(name: &str, args: &[&str]) -> (Output, PathBuf) {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("cli_simulate")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    let out_dir = dir.to_str().expect("utf8 path").to_string();
+    let mut all = vec!["simulate", "--out", &out_dir];
+    all.extend_from_slice(args);
+    (run(&all, ""), dir)
+}
+
+/// Asserts success and returns `summary.json`.
+fn summary(out: &Output, dir: &Path) -> Value {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(dir.join("summary.json")).expect("summary.json");
+    serde_json::from_str(&text).expect("summary is JSON")
+}
+
+fn num(v: &Value, key: &str) -> f64 {
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{key} is a number: {v}"))
+}
+
+/// The CSV as header names and rows of numbers.
+fn csv(dir: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(dir.join("signals.csv")).expect("signals.csv");
+    let mut lines = text.lines();
+    let header = lines
+        .next()
+        .expect("header")
+        .split(',')
+        .map(String::from)
+        .collect();
+    let rows = lines
+        .map(|l| l.split(',').map(|x| x.parse().expect("number")).collect())
+        .collect();
+    (header, rows)
+}
+
+/// Column `name` of a parsed CSV.
+fn column(csv: &(Vec<String>, Vec<Vec<f64>>), name: &str) -> Vec<f64> {
+    let i = csv
+        .0
+        .iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("column {name}"));
+    csv.1.iter().map(|r| r[i]).collect()
+}
+
+/// Exit status non-zero, exactly one stderr line containing every piece of `expected`.
+fn fails_with(name: &str, args: &[&str], expected: &[&str]) {
+    let (out, _) = simulate(name, args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{args:?} succeeded");
+    assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+    for e in expected {
+        assert!(err.contains(e), "{args:?}: {err} lacks {e}");
+    }
+}
+
+#[test]
+fn short_stand_writes_csv_plots_and_a_consistent_summary() {
+    let (out, dir) = simulate("stand", &["--lola", "type2", "--duration", "0.2"]);
+    let s = summary(&out, &dir);
+    // Weight from the model's own masses, independent of the simulation.
+    let model = lola::build(LolaType::Type2).unwrap().model;
+    let mass: f64 = model.bodies().iter().map(|b| b.inertia().mass()).sum();
+    let weight = mass * 9.81;
+    assert!((num(&s, "weight") - weight).abs() < 1e-9 * weight);
+    let fz = num(&s, "final_contact_force");
+    assert!(
+        (fz - weight).abs() < 0.01 * weight,
+        "contact {fz} vs weight {weight}"
+    );
+    assert!(num(&s, "max_contact_force") >= fz);
+    // 200 periods of 1 ms, one RK4 step (4 rhs) each.
+    assert!((num(&s, "sim_time") - 0.2).abs() < 1e-12);
+    assert_eq!(s["steps"].as_u64(), Some(200));
+    assert_eq!(s["rhs_evaluations"].as_u64(), Some(800));
+    let rtf = num(&s, "realtime_factor");
+    assert!(
+        (rtf * num(&s, "wall_time") - 0.2).abs() < 1e-9,
+        "rtf = sim / wall"
+    );
+    assert_eq!(s["scenario"], "stand");
+    assert_eq!(s["method"], "rk4");
+    assert!(s["passed"].is_boolean() && s["checks"].as_array().unwrap().len() == 3);
+    // The CSV: one row per period plus the end, per-foot forces summing to the total.
+    let table = csv(&dir);
+    assert_eq!(table.0[0], "time");
+    assert_eq!(table.1.len(), 201);
+    let time = column(&table, "time");
+    assert!(time.windows(2).all(|w| (w[1] - w[0] - 1e-3).abs() < 1e-12));
+    let (l, r, total) = (
+        column(&table, "left.fz"),
+        column(&table, "right.fz"),
+        column(&table, "contact.fz"),
+    );
+    for k in 0..total.len() {
+        assert!((l[k] + r[k] - total[k]).abs() < 1e-9 * weight);
+    }
+    assert!((total[200] - fz).abs() < 1e-9 * weight, "CSV end = summary");
+    let base = column(&table, "q[2]");
+    assert!((base[200] - num(&s, "final_base_height")).abs() < 1e-15);
+    let com = column(&table, "com.z");
+    assert!((com[200] - num(&s, "final_com_height")).abs() < 1e-12);
+    // Plots: every listed SVG exists and carries its legend labels.
+    let files: Vec<&str> = s["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f.as_str().unwrap())
+        .collect();
+    for (file, label) in [
+        ("base_height.svg", "CoM z"),
+        ("contact_forces.svg", "right.fz"),
+        ("foot_shear.svg", "left.fy"),
+        ("foot_torques.svg", "left.tz"),
+        ("angular_momentum.svg", "L_G.z"),
+        ("joint_angles.svg", "shank"),
+        ("motor_currents.svg", "shank"),
+    ] {
+        assert!(files.contains(&file), "{file} listed");
+        let svg = std::fs::read_to_string(dir.join(file)).unwrap();
+        assert!(svg.starts_with("<svg") && svg.contains(label), "{file}");
+    }
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("realtime factor") && stdout.contains("summary.json"));
+}
+
+#[test]
+fn drop_lands_and_sway_runs() {
+    let (out, dir) = simulate("drop", &["--scenario", "drop", "--duration", "0.3"]);
+    let s = summary(&out, &dir);
+    let base = column(&csv(&dir), "q[2]");
+    assert!(
+        base[0] - base[base.len() - 1] > 0.04,
+        "fell about 5 cm: {base:?}"
+    );
+    assert!(
+        num(&s, "max_contact_force") > num(&s, "weight"),
+        "landing impact"
+    );
+    let (out, dir) = simulate("sway", &["--scenario", "sway", "--duration", "0.3"]);
+    let s = summary(&out, &dir);
+    assert_eq!(s["scenario"], "sway");
+    assert!(
+        num(&s, "final_contact_force") > 0.5 * num(&s, "weight"),
+        "still standing"
+    );
+}
+
+#[test]
+fn every_integrator_is_accepted_with_its_rhs_count() {
+    for (method, rhs_per_step) in [("euler", 1), ("symplectic", 1), ("rk4", 4), ("dopri5", 0)] {
+        let args = ["--integrator", method, "--duration", "0.02"];
+        let (out, dir) = simulate(method, &args);
+        let s = summary(&out, &dir);
+        assert_eq!(s["method"], method);
+        let (steps, rhs) = (
+            s["steps"].as_u64().unwrap(),
+            s["rhs_evaluations"].as_u64().unwrap(),
+        );
+        if rhs_per_step > 0 {
+            assert_eq!(steps, 20, "{method}: one step per 1 ms period");
+            assert_eq!(rhs, rhs_per_step * steps, "{method}");
+            assert_eq!(num(&s, "step"), 1e-3);
+        } else {
+            assert!(
+                steps >= 1 && rhs >= 6 * steps,
+                "dopri5: {steps} steps, {rhs} rhs"
+            );
+            assert_eq!(num(&s["tolerances"], "rtol"), 1e-6);
+        }
+    }
+}
+
+#[test]
+fn type3_defaults_to_a_tenth_of_a_millisecond() {
+    let (out, dir) = simulate("type3", &["--lola", "type3", "--duration", "0.01"]);
+    let s = summary(&out, &dir);
+    assert_eq!(s["steps"].as_u64(), Some(100));
+    assert_eq!(s["layout"]["nv"].as_u64(), Some(47));
+}
+
+/// The G1 in a bent-knee pose, soles spanning its URDF contact spheres (as the library's
+/// `sim_urdf` test).
+#[test]
+fn urdf_robot_stands_on_its_soles() {
+    let g1 = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/crates/dynamics/data/g1_29dof_rev_1_0.urdf"
+    );
+    let pose: Vec<String> = ["left", "right"]
+        .iter()
+        .flat_map(|s| {
+            [("hip_pitch", -0.2), ("knee", 0.4), ("ankle_pitch", -0.2)]
+                .map(|(j, a)| format!("{s}_{j}_joint={a}"))
+        })
+        .collect();
+    let pose = pose.join(",");
+    let (out, dir) = simulate(
+        "g1",
+        &[
+            "--urdf",
+            g1,
+            "--floating",
+            "--feet",
+            "left_ankle_roll_link,right_ankle_roll_link",
+            "--sole-center",
+            "0.035,0,-0.035",
+            "--sole-size",
+            "0.17,0.055",
+            "--pose",
+            &pose,
+            "--duration",
+            "0.3",
+        ],
+    );
+    let s = summary(&out, &dir);
+    assert_eq!(s["actuators"].as_u64(), Some(29));
+    assert_eq!(s["layout"]["ncontact"].as_u64(), Some(32));
+    let w = num(&s, "weight");
+    let table = csv(&dir);
+    let fz = column(&table, "contact.fz");
+    assert!(
+        fz.iter().all(|f| (f - w).abs() < 0.3 * w),
+        "the soles carry the robot without bouncing: {fz:?}"
+    );
+    assert!((fz[fz.len() - 1] - w).abs() < 0.05 * w);
+    let knee = column(&table, "q[10]");
+    assert!(
+        knee.iter().all(|q| (q - 0.4).abs() < 0.05),
+        "knee held: {knee:?}"
+    );
+}
+
+#[test]
+fn failures_and_criteria_set_the_exit_status() {
+    // Explicit Euler at 1 ms on Type 3's stiff gears diverges: one line, partial CSV kept.
+    let args = [
+        "--lola",
+        "type3",
+        "--integrator",
+        "euler",
+        "--step",
+        "1e-3",
+        "--duration",
+        "0.2",
+    ];
+    fails_with(
+        "diverges",
+        &args,
+        &["simulation failed at t =", "signals.csv"],
+    );
+    // Still falling after 50 ms: the rest criterion fails; only --check turns it into status 1.
+    let args = ["--scenario", "drop", "--duration", "0.05"];
+    let (out, dir) = simulate("drop_check", &args);
+    assert_eq!(summary(&out, &dir)["passed"], false);
+    let (out, _) = simulate("drop_check", &[&args[..], &["--check"]].concat());
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("FAILED"));
+}
+
+#[test]
+fn default_output_folder_is_per_scenario() {
+    let cwd = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let dir = cwd.join("out/simulate/drop");
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = run(
+        &["simulate", "--scenario", "drop", "--duration", "0.005"],
+        "",
+    );
+    summary(&out, &dir);
+}
+
+#[test]
+fn bad_inputs_fail_with_one_line() {
+    let g1 = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/crates/dynamics/data/g1_29dof_rev_1_0.urdf"
+    );
+    let feet = "left_ankle_roll_link,right_ankle_roll_link";
+    let cases: &[(&[&str], &[&str])] = &[
+        (&["--scenario", "walk"], &["--scenario", "walk"]),
+        (&["--integrator", "rk5"], &["--integrator", "rk5"]),
+        (&["--lola", "type4"], &["--lola", "type4"]),
+        (&["--duration", "-1"], &["--duration", "-1"]),
+        (&["--duration", "soon"], &["--duration", "soon"]),
+        (&["--duration", "1e-5"], &["--duration", "control period"]),
+        (&["--step", "0"], &["--step"]),
+        (
+            &["--integrator", "dopri5", "--step", "1e-3"],
+            &["--step", "dopri5"],
+        ),
+        (&["--tolerances", "1e-3,1e-3"], &["--tolerances"]),
+        (
+            &["--integrator", "dopri5", "--tolerances", "-1,0"],
+            &["--tolerances", "rtol"],
+        ),
+        (&["--pose", "no_joint=0.1"], &["--pose", "no_joint"]),
+        (&["--pose", "l_shank"], &["--pose", "JOINT=ANGLE"]),
+        (&["--feet", feet], &["--feet", "--urdf"]),
+        (
+            &[
+                "--urdf",
+                "/no/such/robot.urdf",
+                "--floating",
+                "--feet",
+                feet,
+            ],
+            &["/no/such/robot.urdf"],
+        ),
+        (&["--urdf", g1, "--feet", feet], &["--floating"]),
+        (&["--urdf", g1, "--floating"], &["--feet"]),
+        (
+            &[
+                "--urdf",
+                g1,
+                "--floating",
+                "--feet",
+                "left_toe,right_ankle_roll_link",
+            ],
+            &["--feet", "left_toe", "g1_29dof"],
+        ),
+        (
+            &["--urdf", g1, "--floating", "--feet", "one_link"],
+            &["--feet", "LEFT,RIGHT"],
+        ),
+        (
+            &[
+                "--urdf",
+                g1,
+                "--floating",
+                "--feet",
+                feet,
+                "--scenario",
+                "sway",
+            ],
+            &["--sway-joints"],
+        ),
+        (
+            &[
+                "--urdf",
+                g1,
+                "--floating",
+                "--feet",
+                feet,
+                "--sole-size",
+                "0.1",
+            ],
+            &["--sole-size"],
+        ),
+        (&["--urdf", g1, "--lola", "type2"], &["--lola", "--urdf"]),
+        (&["--contact", "-1,0"], &["--contact", "stiffness"]),
+        (&["--contact", "1e5"], &["--contact", "2 comma-separated"]),
+    ];
+    for (args, expected) in cases {
+        fails_with("bad", args, expected);
+    }
+}
