@@ -194,6 +194,29 @@ fn every_integrator_is_accepted_with_its_rhs_count() {
 }
 
 #[test]
+fn every_nth_period_and_the_end_are_recorded() {
+    for (duration, rows, last_gap) in [("0.2", 21, 0.01), ("0.205", 22, 0.005)] {
+        let args = [
+            "--scenario",
+            "drop",
+            "--duration",
+            duration,
+            "--every",
+            "10",
+        ];
+        let (out, dir) = simulate("every", &args);
+        let s = summary(&out, &dir);
+        let time = column(&csv(&dir), "time");
+        assert_eq!(time.len(), rows, "{duration}");
+        assert!(time[..rows - 1]
+            .windows(2)
+            .all(|w| (w[1] - w[0] - 0.01).abs() < 1e-12));
+        assert!((time[rows - 1] - time[rows - 2] - last_gap).abs() < 1e-12);
+        assert!((time[rows - 1] - num(&s, "sim_time")).abs() < 1e-12);
+    }
+}
+
+#[test]
 fn type3_defaults_to_a_tenth_of_a_millisecond() {
     let (out, dir) = simulate("type3", &["--lola", "type3", "--duration", "0.01"]);
     let s = summary(&out, &dir);
@@ -370,6 +393,8 @@ fn bad_inputs_fail_with_one_line() {
             &["--sole-size"],
         ),
         (&["--urdf", g1, "--lola", "type2"], &["--lola", "--urdf"]),
+        (&["--every", "0"], &["--every", "whole number"]),
+        (&["--every", "1.5"], &["--every"]),
         (&["--contact", "-1,0"], &["--contact", "stiffness"]),
         (&["--contact", "1e5"], &["--contact", "2 comma-separated"]),
     ];

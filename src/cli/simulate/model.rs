@@ -1,0 +1,136 @@
+//! The simulated robot: the Lola-like biped (`--lola`) or a floating-base URDF robot
+//! (`--urdf --floating --feet ...`), as a plant with its scenario options and default step.
+
+use super::parse::{names, numbers};
+use super::SimulateArgs;
+use biped_robots::lola::LolaType;
+use biped_sim::plant::{lola_plant, urdf_plant, Plant, PlantConfig, UrdfFeet};
+use biped_sim::scenario::{ScenarioKind, ScenarioOptions, SwayJoints};
+use biped_sim::SimError;
+use nalgebra::Vector3;
+use std::path::Path;
+
+/// Error of this module: one line naming the option.
+type SetupError = Box<dyn std::error::Error>;
+
+/// Fixed step of Type 3 \[s]: its elastic gears (~9000 rad/s on the toe) need <= 0.25 ms.
+const TYPE3_STEP: f64 = 1e-4;
+
+/// Contact stiffness and damping per point of URDF robots \[N/m, N s/m]: their feet carry no
+/// reflected rotor inertia, so Lola's 2e5 / 400 puts the foot's damping eigenvalue
+/// (`8 d / m_foot`, ~5000 1/s on the G1) outside RK4's stability region at 1 ms.
+const URDF_CONTACT: [f64; 2] = [5e4, 100.0];
+
+/// Plant, scenario options, label and default fixed step of the Lola-like biped.
+pub type Source = (Plant, ScenarioOptions, String, f64);
+
+/// The Lola-like biped of `crates/robots/data/lola.toml`.
+pub fn lola_source(a: &SimulateArgs) -> Result<Source, SetupError> {
+    let text = a.lola.as_deref().unwrap_or("type2");
+    let variant: LolaType = text.parse().map_err(|e| format!("--lola: {e}"))?;
+    let lp = lola_plant(variant, plant_config(a, None)?)?;
+    let options = ScenarioOptions::lola();
+    let step = match variant {
+        LolaType::Type2 => options.period,
+        LolaType::Type3 => TYPE3_STEP,
+    };
+    Ok((lp.plant, options, format!("Lola {variant:?}"), step))
+}
+
+/// Rejects the URDF options without `--urdf`.
+pub fn urdf_only(a: &SimulateArgs) -> Result<(), String> {
+    let given = [
+        ("--floating", a.floating),
+        ("--feet", a.feet.is_some()),
+        ("--sole-center", a.sole_center.is_some()),
+        ("--sole-size", a.sole_size.is_some()),
+        ("--sway-joints", a.sway_joints.is_some()),
+    ];
+    match given.iter().find(|(_, on)| *on) {
+        Some((option, _)) => Err(format!("{option}: only applies with --urdf FILE")),
+        None => Ok(()),
+    }
+}
+
+/// A floating-base URDF robot with the sole rectangles and sway joints of the options.
+pub fn urdf_source(
+    a: &SimulateArgs,
+    path: &Path,
+    kind: ScenarioKind,
+) -> Result<Source, SetupError> {
+    if a.lola.is_some() {
+        return Err("--lola: give either --lola TYPE or --urdf FILE, not both".into());
+    }
+    if !a.floating {
+        return Err(
+            "--urdf: add --floating (the scenarios put a free-floating robot on the ground)".into(),
+        );
+    }
+    let feet_text = a
+        .feet
+        .as_deref()
+        .ok_or("--urdf: add --feet LEFT,RIGHT (the links carrying the soles)")?;
+    let links = names(feet_text, 2, "--feet", "LEFT,RIGHT")?;
+    let mut feet = UrdfFeet::new(&links[0], &links[1]);
+    if let Some(text) = &a.sole_center {
+        let c = numbers(text, 3, "--sole-center")?;
+        feet.center = Vector3::new(c[0], c[1], c[2]);
+    }
+    if let Some(text) = &a.sole_size {
+        let s = numbers(text, 2, "--sole-size")?;
+        if s.iter().any(|x| *x <= 0.0) {
+            return Err(format!("--sole-size: length and width must be > 0, got {text}").into());
+        }
+        (feet.length, feet.width) = (s[0], s[1]);
+    }
+    let config = plant_config(a, Some(URDF_CONTACT))?;
+    let plant = urdf_plant(path, &feet, config).map_err(|e| match e {
+        SimError::InvalidParameter { what, reason } if what == "urdf" => reason,
+        e @ SimError::Unknown { .. } => format!("--feet: {e} in {}", path.display()),
+        e => format!("{}: {e}", path.display()),
+    })?;
+    let sway_joints =
+        match &a.sway_joints {
+            Some(text) => {
+                let j = names(text, 4, "--sway-joints", "HIP_L,HIP_R,ANKLE_L,ANKLE_R")?;
+                Some(SwayJoints {
+                    hips: [j[0].clone(), j[1].clone()],
+                    ankles: [j[2].clone(), j[3].clone()],
+                })
+            }
+            None if kind == ScenarioKind::Sway => return Err(
+                "--scenario sway on a URDF robot needs --sway-joints HIP_L,HIP_R,ANKLE_L,ANKLE_R"
+                    .into(),
+            ),
+            None => None,
+        };
+    let options = ScenarioOptions {
+        sway_joints,
+        ..ScenarioOptions::default()
+    };
+    let step = options.period;
+    Ok((plant, options, path.display().to_string(), step))
+}
+
+/// Plant options: `--contact K,D` (else `default` or the library's contact law).
+fn plant_config(a: &SimulateArgs, default: Option<[f64; 2]>) -> Result<PlantConfig, SetupError> {
+    let mut config = PlantConfig::default();
+    let kd = match &a.contact {
+        Some(text) => {
+            let v = numbers(text, 2, "--contact")?;
+            if v[0] <= 0.0 || v[1] < 0.0 {
+                return Err(
+                    format!("--contact: need stiffness > 0 and damping >= 0, got {text}").into(),
+                );
+            }
+            Some([v[0], v[1]])
+        }
+        None => default,
+    };
+    if let Some([k, d]) = kd {
+        let c = &mut config.contact;
+        (c.stiffness, c.damping) = (k, d);
+        (c.tangential_stiffness, c.tangential_damping) = (k, d);
+    }
+    Ok(config)
+}

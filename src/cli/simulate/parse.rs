@@ -1,0 +1,72 @@
+//! Parsers of the option values of `biped simulate`; every error names the option.
+
+/// A finite number > 0.
+pub fn positive(option: &str, text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
+        Ok(x) => Err(format!("{option}: must be finite and > 0, got {x}")),
+        Err(e) => Err(format!("{option}: \"{text}\" is not a number ({e})")),
+    }
+}
+
+/// Exactly `n` comma-separated finite numbers.
+pub fn numbers(text: &str, n: usize, option: &str) -> Result<Vec<f64>, String> {
+    let parsed: Result<Vec<f64>, _> = text.split(',').map(|s| s.trim().parse::<f64>()).collect();
+    match parsed {
+        Ok(v) if v.len() == n && v.iter().all(|x| x.is_finite()) => Ok(v),
+        _ => Err(format!(
+            "{option}: expected {n} comma-separated finite numbers, got \"{text}\""
+        )),
+    }
+}
+
+/// Exactly `n` comma-separated non-empty names.
+pub fn names(text: &str, n: usize, option: &str, shape: &str) -> Result<Vec<String>, String> {
+    let v: Vec<String> = text.split(',').map(|s| s.trim().to_string()).collect();
+    if v.len() != n || v.iter().any(String::is_empty) {
+        return Err(format!("{option}: expected {shape}, got \"{text}\""));
+    }
+    Ok(v)
+}
+
+/// `JOINT=ANGLE` pairs separated by commas.
+pub fn parse_pose(text: &str) -> Result<Vec<(String, f64)>, String> {
+    text.split(',')
+        .map(|item| {
+            let bad =
+                || format!("--pose: expected JOINT=ANGLE with a finite angle, got \"{item}\"");
+            let (joint, angle) = item.split_once('=').ok_or_else(bad)?;
+            let angle: f64 = angle.trim().parse().map_err(|_| bad())?;
+            if joint.trim().is_empty() || !angle.is_finite() {
+                return Err(bad());
+            }
+            Ok((joint.trim().to_string(), angle))
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn option_values() {
+        assert_eq!(positive("--x", " 2.5 "), Ok(2.5));
+        assert!(positive("--x", "0").is_err() && positive("--x", "nan").is_err());
+        assert_eq!(numbers("1, -2,3e-1", 3, "--v"), Ok(vec![1.0, -2.0, 0.3]));
+        assert!(numbers("1,2", 3, "--v")
+            .unwrap_err()
+            .starts_with("--v: expected 3"));
+        assert!(numbers("1,inf", 2, "--v").is_err());
+        assert_eq!(
+            names("a, b", 2, "--n", "A,B"),
+            Ok(vec!["a".into(), "b".into()])
+        );
+        assert!(names("a,", 2, "--n", "A,B").is_err());
+        let pose = parse_pose("knee=0.4, hip = -0.2").unwrap();
+        assert_eq!(pose, vec![("knee".into(), 0.4), ("hip".into(), -0.2)]);
+        for bad in ["knee", "=1", "knee=x", "knee=inf", ""] {
+            assert!(parse_pose(bad).is_err(), "{bad}");
+        }
+    }
+}
