@@ -3,30 +3,55 @@
 //! and its contact force equals its weight within 0.1 %.
 
 use biped_robots::lola::LolaType;
+use biped_sim::controller::JointPd;
 use biped_sim::drive::DriveMode;
 use biped_sim::ode::{Method, Settings};
 use biped_sim::plant::{lola_plant, PlantConfig};
 use biped_sim::scenario::{build, ScenarioKind, ScenarioOptions};
-use biped_sim::simulation::Summary;
+use biped_sim::simulation::{Simulation, Summary};
 
 fn run(variant: LolaType, kind: ScenarioKind, h: f64, duration: Option<f64>) -> Summary {
+    run_sim(variant, kind, h, duration).0
+}
+
+fn run_sim(
+    variant: LolaType,
+    kind: ScenarioKind,
+    h: f64,
+    duration: Option<f64>,
+) -> (Summary, Simulation<JointPd>) {
     let mut lp = lola_plant(variant, PlantConfig::default()).unwrap();
     let opts = ScenarioOptions {
         duration,
         ..ScenarioOptions::lola()
     };
     let sc = build(kind, &mut lp.plant, &opts).unwrap();
-    let (summary, _) = sc
+    let (summary, sim) = sc
         .run_with(lp.plant, Method::Rk4, Settings::fixed(h), &mut |_| Ok(()))
         .unwrap();
     println!("{}", serde_json::to_string_pretty(&summary).unwrap());
     assert_eq!(summary.drive_mode, DriveMode::Torque);
-    summary
+    (summary, sim)
 }
 
 #[test]
 fn stand_type2_comes_to_rest_and_carries_its_weight() {
-    let s = run(LolaType::Type2, ScenarioKind::Stand, 1e-3, None);
+    let (s, sim) = run_sim(LolaType::Type2, ScenarioKind::Stand, 1e-3, None);
+    // At rest the sensors see the weight: F/T z-forces sum to m g (feet level), the IMU
+    // reads the specific force +g along the (nearly upright) base z axis.
+    let sensors = sim.sensors();
+    let fz: f64 = sensors.foot_wrenches.iter().map(|w| w.lin.z).sum();
+    assert!(
+        (fz - s.weight).abs() < 2e-3 * s.weight,
+        "F/T {fz} vs weight {}",
+        s.weight
+    );
+    let imu = sensors.imu.expect("floating base has an IMU");
+    let g = imu.linear_acceleration;
+    assert!(
+        (g.z - 9.81).abs() < 1e-2 && g.x.abs() < 2e-2 && g.y.abs() < 2e-2,
+        "IMU {g:?}"
+    );
     assert!(s.passed(), "{:?}", s.checks);
     assert_eq!(s.layout.table_2_3(), [31, 32, 0, 95]);
     let err = (s.final_contact_force - s.weight).abs() / s.weight;
