@@ -292,7 +292,7 @@ fn failures_and_criteria_set_the_exit_status() {
     fails_with(
         "diverges",
         &args,
-        &["simulation failed at t =", "signals.csv"],
+        &["simulation failed after t =", "signals.csv"],
     );
     // Still falling after 50 ms: the rest criterion fails; only --check turns it into status 1.
     let args = ["--scenario", "drop", "--duration", "0.05"];

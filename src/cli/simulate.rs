@@ -124,7 +124,7 @@ pub fn run(args: SimulateArgs) -> CliResult {
         Ok(done) => done,
         Err(e) => {
             let saved = output::write_partial(&rec, &out_dir);
-            return Err(format!("simulation failed at t = {last_t:.4} s: {e}{saved}").into());
+            return Err(format!("simulation failed after t = {last_t:.4} s: {e}{saved}").into());
         }
     };
     let plant = sim.plant();

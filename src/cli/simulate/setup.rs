@@ -15,7 +15,7 @@ use biped_sim::SimError;
 type SetupError = Box<dyn std::error::Error>;
 
 /// Largest number of recorded rows reserved up front (longer runs grow the recorder).
-const MAX_RESERVED_ROWS: usize = 1 << 20;
+const MAX_RESERVED_ROWS: usize = 1 << 16;
 
 /// What the run was, for the report and `summary.json`.
 #[derive(Debug, Clone)]
