@@ -3,6 +3,7 @@
 use super::{DriveMode, FrictionParams, MotorParams};
 use crate::error::SimError;
 use biped_dynamics::mechanism::{Coupling, MAX_COUPLED};
+use biped_dynamics::model::Mechanism;
 use biped_dynamics::{BodyId, JointModel, Model};
 use serde::Serialize;
 
@@ -161,12 +162,18 @@ impl Actuator {
                 else {
                     return Err(SimError::Unsupported("rotor is not a coupled part".into()));
                 };
-                let mut qv = [0.0; MAX_COUPLED];
-                for k in 0..n {
-                    qv[k] = q[q_in[k]];
-                }
-                let m = mechanism.motion(&qv[..n], &[0.0; MAX_COUPLED][..n])?;
-                let coef = std::array::from_fn(|k| if k < n { m.jacobian[k][2] } else { 0.0 });
+                let coef = if let Mechanism::Knee(knee) = mechanism {
+                    // Fast path (3.3), (3.5): spin rate N_screw dl/dq, no part frames.
+                    let t = knee.drive.transmission(q[q_in[0]])?;
+                    [knee.drive.screw_ratio() * t.dtravel, 0.0, 0.0]
+                } else {
+                    let mut qv = [0.0; MAX_COUPLED];
+                    for k in 0..n {
+                        qv[k] = q[q_in[k]];
+                    }
+                    let m = mechanism.motion(&qv[..n], &[0.0; MAX_COUPLED][..n])?;
+                    std::array::from_fn(|k| if k < n { m.jacobian[k][2] } else { 0.0 })
+                };
                 Some(MotorRow {
                     idx: v_in,
                     coef,
