@@ -28,6 +28,8 @@ enum Command {
     Calibrate(cli::calibrate::CalibrateArgs),
     /// Simulate a scenario (stand, drop, sway) and write signals, plots and a summary.
     Simulate(Box<cli::simulate::SimulateArgs>),
+    /// Walk Lola with the whole-body IK and compare the arm methods (thesis ch. 7).
+    Walk(cli::walk::WalkArgs),
     /// Benchmarks of whole capabilities.
     #[command(subcommand)]
     Bench(cli::BenchCommand),
@@ -41,6 +43,7 @@ fn main() -> ExitCode {
         Command::Dynamics(args) => cli::dynamics::run_dynamics(args),
         Command::Calibrate(args) => cli::calibrate::run(args),
         Command::Simulate(args) => cli::simulate::run(*args),
+        Command::Walk(args) => cli::walk::run(args),
         Command::Bench(cmd) => cli::run_bench(cmd),
     };
     match result {

@@ -4,6 +4,7 @@ pub mod calibrate;
 pub mod dynamics;
 pub mod simulate;
 pub mod ssv;
+pub mod walk;
 
 use clap::Subcommand;
 use std::process::ExitCode;

@@ -1,0 +1,110 @@
+//! `biped walk`: Lola's whole-body IK over a walking pattern with the arm methods of thesis
+//! ch. 7; writes per-method CSV, SVG plots in the style of Fig. 7.1/7.4 and `summary.json`.
+
+use super::CliResult;
+use biped_control::pattern::WalkingPattern;
+use biped_control::walk::{run_walk, walk_pattern_params, Method, WalkParams, WalkRun};
+use biped_control::walk::run::RECORDED_JOINTS;
+use biped_robots::lola::{self, LolaType};
+use biped_sim::Recorder;
+use clap::Args;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Arguments of `biped walk`.
+#[derive(Args)]
+pub struct WalkArgs {
+    /// Number of steps.
+    #[arg(long, default_value_t = 10)]
+    steps: usize,
+    /// Step length [m] (footprint ahead of the previous one).
+    #[arg(long, default_value_t = 0.4)]
+    step_length: f64,
+    /// Step time [s].
+    #[arg(long, default_value_t = 0.8)]
+    step_time: f64,
+    /// Arm method: none, reference, compensation, minimization or all.
+    #[arg(long, default_value = "all")]
+    method: String,
+    /// Track the joint trajectories in the full dynamic simulation (not available yet).
+    #[arg(long)]
+    dynamic: bool,
+    /// Output directory.
+    #[arg(long, default_value = "out/walk")]
+    out: PathBuf,
+}
+
+/// Run `biped walk`.
+pub fn run(args: WalkArgs) -> CliResult {
+    let methods: Vec<Method> = match args.method.as_str() {
+        "all" => Method::ALL.to_vec(),
+        m => vec![m.parse()?],
+    };
+    if args.dynamic {
+        return Err("--dynamic: the dynamic walking simulation is not available yet".into());
+    }
+    if args.steps == 0 {
+        return Err("--steps must be at least 1".into());
+    }
+    let lola = lola::build(LolaType::Type2)?;
+    let params = walk_pattern_params(&lola, args.steps, args.step_length, args.step_time)?;
+    let pattern = WalkingPattern::generate(&params)?;
+    std::fs::create_dir_all(&args.out)?;
+    let mut runs = Vec::new();
+    for m in methods {
+        let run = run_walk(&lola, &pattern, m, WalkParams::default())?;
+        write_csv(&run, &args.out.join(format!("{m}.csv")))?;
+        eprintln!("{m}: peak |L_z| {:.3} N m s, peak |tau_z| {:.2} N m, min distance {:.4} m, IK median {:.1} us",
+            run.summary.peak_abs_lz, run.summary.peak_abs_tau_z, run.summary.min_distance, run.summary.ik_us_median);
+        runs.push(run);
+    }
+    write_plots(&runs, &args.out)?;
+    let summary: serde_json::Map<String, serde_json::Value> = runs
+        .iter()
+        .map(|r| Ok((r.method.name().to_string(), serde_json::to_value(r.summary)?)))
+        .collect::<Result<_, serde_json::Error>>()?;
+    let text = serde_json::to_string_pretty(&summary)?;
+    std::fs::write(args.out.join("summary.json"), text)?;
+    println!("wrote {}", args.out.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Time series of one method as CSV.
+fn write_csv(run: &WalkRun, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    let s = &run.series;
+    let mut rec = Recorder::with_capacity(s.t.len());
+    for k in 0..s.t.len() {
+        rec.sample(s.t[k])?;
+        rec.set("L_z", s.lz[k])?;
+        rec.set("dL_z", s.dlz[k])?;
+        rec.set("tau_z", s.tau_z[k])?;
+        rec.set("min_distance", s.min_distance[k])?;
+        for (name, v) in RECORDED_JOINTS.iter().zip(s.joints[k]) {
+            rec.set(name, v)?;
+        }
+    }
+    rec.write_csv(path)?;
+    Ok(())
+}
+
+/// `L_z` and `tau_z` of all methods over time, side by side (Fig. 7.1/7.4 style).
+fn write_plots(runs: &[WalkRun], out: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    let Some(first) = runs.first() else {
+        return Ok(());
+    };
+    let mut rec = Recorder::with_capacity(first.series.t.len());
+    for k in 0..first.series.t.len() {
+        rec.sample(first.series.t[k])?;
+        for r in runs {
+            rec.set(&format!("L_z {}", r.method), r.series.lz[k])?;
+            rec.set(&format!("tau_z {}", r.method), r.series.tau_z[k])?;
+        }
+    }
+    for (sig, unit, file) in [("L_z", "L_z [N m s]", "lz.svg"), ("tau_z", "tau_z [N m]", "tau_z.svg")] {
+        let names: Vec<String> = runs.iter().map(|r| format!("{sig} {}", r.method)).collect();
+        let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+        let title = format!("{sig} during walking, arm methods compared");
+        rec.plot_svg(&out.join(file), &title, &refs, unit)?;
+    }
+    Ok(())
+}
