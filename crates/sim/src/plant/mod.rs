@@ -9,11 +9,13 @@
 
 mod build;
 mod energy;
+mod inertia;
 pub mod kinematics;
 pub mod layout;
 
 pub use build::{lola_plant, urdf_plant, LolaPlant, UrdfFeet};
 pub use energy::Energy;
+pub use inertia::ActuatorInertia;
 pub use layout::StateLayout;
 
 use crate::contact::{ContactOutput, ContactParams, ContactSet, FootSpec};
@@ -71,21 +73,6 @@ impl Default for PlantConfig {
             algorithm: Algorithm::On,
         }
     }
-}
-
-/// Inertias seen by one actuator \[kg m^2 or kg], for gain scheduling.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ActuatorInertia {
-    /// Mass-matrix diagonal at the joint coordinate: the subtree plus reflected rotor inertia
-    /// (Type 3: plus `N^2` times the motor's diagonal).
-    pub sub: f64,
-    /// Rigid inertia of all other bodies about the joint axis if the subtree holds a foot
-    /// (what a stance joint moves, e.g. an ankle carrying the body), else 0.
-    pub rest: f64,
-    /// Inertia the actuator drives when everything else moves freely too, `1 / (M^-1)_jj`
-    /// (at most `sub`; the decentralised PD's stability cap); for elastic gears the motor
-    /// coordinate's, times `N^2`.
-    pub free: f64,
 }
 
 /// Everything the plant computes besides `zdot` at one state (overwritten by every call).
@@ -163,7 +150,7 @@ impl Plant {
             drives: vec![DriveState::default(); actuators.len()],
         };
         let mut data = Data::new(&model);
-        let gear_damping = gear_dampers(&model, &mut data, &gears, &config)?;
+        let gear_damping = inertia::gear_dampers(&model, &mut data, &gears, &config)?;
         Ok(Self {
             data,
             gear_damping,
@@ -295,104 +282,6 @@ impl Plant {
         self.qdot.floating_base()
     }
 
-    /// Transmission matrix `A` at `q`: joint torque of actuator `j` = `sum_k A[j][k] tau_m,k`
-    /// (steady state), from the motor rows (`N` for rigid and elastic gears, the screw
-    /// Jacobians for knee and ankles, 1 for direct joints).
-    pub fn transmission_matrix(
-        &self,
-        q: &DVector<f64>,
-    ) -> Result<nalgebra::DMatrix<f64>, SimError> {
-        let n = self.actuators.len();
-        let mut a = nalgebra::DMatrix::zeros(n, n);
-        for (k, act) in self.actuators.iter().enumerate() {
-            match (act.transmission, act.motor_row(&self.model, q.as_slice())?) {
-                (crate::drive::Transmission::Elastic { ratio, .. }, _) => a[(k, k)] = ratio,
-                (_, None) => a[(k, k)] = 1.0,
-                (_, Some(row)) => {
-                    for (v, c) in row.entries() {
-                        if let Some(j) = self.actuators.iter().position(|x| x.joint_v == v) {
-                            a[(j, k)] = c;
-                        }
-                    }
-                }
-            }
-        }
-        Ok(a)
-    }
-
-    /// Inertias seen by each actuator at `q` (see [`ActuatorInertia`]).
-    pub fn actuator_inertias(
-        &mut self,
-        q: &DVector<f64>,
-    ) -> Result<Vec<ActuatorInertia>, SimError> {
-        let m = biped_dynamics::mass_matrix(&self.model, &mut self.data, q)?.clone();
-        let minv = m.clone().cholesky().map(|c| c.inverse()).ok_or_else(|| {
-            SimError::InvalidParameter {
-                what: "mass matrix".into(),
-                reason: "not positive definite".into(),
-            }
-        })?;
-        let mut out = Vec::with_capacity(self.actuators.len());
-        for a in &self.actuators {
-            let link = m[(a.joint_v, a.joint_v)];
-            let (sub, free) = match a.transmission {
-                crate::drive::Transmission::Elastic { motor_v, ratio, .. } => {
-                    let motor = ratio * ratio * m[(motor_v, motor_v)];
-                    (link + motor, ratio * ratio / minv[(motor_v, motor_v)])
-                }
-                _ => (link, 1.0 / minv[(a.joint_v, a.joint_v)]),
-            };
-            out.push(ActuatorInertia {
-                sub,
-                rest: self.rest_inertia(a.joint_v),
-                free,
-            });
-        }
-        Ok(out)
-    }
-
-    /// Rigid inertia about the axis of the one-DoF joint owning `v` of every body outside its
-    /// subtree, if the subtree holds a foot (else 0: nothing can hold it); world poses from the
-    /// last kinematics pass.
-    fn rest_inertia(&self, v: usize) -> f64 {
-        let bodies = self.model.bodies();
-        let Some(j) = bodies
-            .iter()
-            .position(|b| b.owns_coordinates() && b.v_index() == v && b.joint().nv() == 1)
-        else {
-            return 0.0;
-        };
-        let axis = match bodies[j].joint() {
-            biped_dynamics::JointModel::Revolute { axis } => {
-                self.data.world_rot[j] * axis.into_inner()
-            }
-            _ => return 0.0,
-        };
-        let p = self.data.world_pos[j];
-        let in_subtree = |mut i: usize| loop {
-            if i == j {
-                return true;
-            }
-            match bodies[i].parent() {
-                Some(par) => i = par,
-                None => return false,
-            }
-        };
-        if !self.contact.bodies().any(in_subtree) {
-            return 0.0;
-        }
-        (0..bodies.len())
-            .filter(|&i| !in_subtree(i))
-            .map(|i| {
-                let (r, inertia) = (self.data.world_rot[i], bodies[i].inertia());
-                let c = self.data.world_pos[i] + r * inertia.com() - p;
-                let a_body = r.transpose() * axis;
-                a_body.dot(&(inertia.inertia_about_com() * a_body))
-                    + inertia.mass() * axis.cross(&c).norm_squared()
-            })
-            .sum()
-    }
-
     /// The model and the workspace, for kinematics queries (CoM, Jacobians) at a state.
     pub fn model_and_data(&mut self) -> (&Model, &mut Data) {
         (&self.model, &mut self.data)
@@ -478,30 +367,6 @@ impl Plant {
         self.qdot.qdot(&z[l.q()], &z[l.v()], &mut zdot[l.q()]);
         Ok(())
     }
-}
-
-/// Gear dampers `2 zeta sqrt(k J)` with the reduced inertia of link and motor at neutral.
-fn gear_dampers(
-    model: &Model,
-    data: &mut Data,
-    gears: &[ElasticGear],
-    c: &PlantConfig,
-) -> Result<Vec<f64>, SimError> {
-    if gears.is_empty() {
-        return Ok(Vec::new());
-    }
-    let m = biped_dynamics::mass_matrix(model, data, &model.neutral())?;
-    Ok(gears
-        .iter()
-        .map(|g| {
-            let (jl, jm) = (
-                m[(g.link_v, g.link_v)],
-                g.ratio * g.ratio * m[(g.motor_v, g.motor_v)],
-            );
-            let j = jl * jm / (jl + jm);
-            2.0 * c.gear_damping_ratio * (c.gear_stiffness * j).sqrt()
-        })
-        .collect())
 }
 
 impl OdeSystem for Plant {
