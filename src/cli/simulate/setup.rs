@@ -80,7 +80,10 @@ impl Job {
             .integrator
             .parse()
             .map_err(|e| format!("--integrator: {e}"))?;
-        let duration = positive("--duration", &a.duration)?;
+        let duration = match &a.duration {
+            Some(text) => Some(positive("--duration", text)?),
+            None => None,
+        };
         let pose = match &a.pose {
             Some(text) => parse_pose(text)?,
             None => Vec::new(),
@@ -98,14 +101,12 @@ impl Job {
                 None => options.pose.push((name, angle)),
             }
         }
-        if duration < 0.5 * options.period {
+        if let Some(d) = duration.filter(|d| *d < 0.5 * options.period) {
             let p = options.period;
-            return Err(format!(
-                "--duration: {duration} s is shorter than one control period ({p} s)"
-            )
-            .into());
+            let why = format!("--duration: {d} s is shorter than one control period ({p} s)");
+            return Err(why.into());
         }
-        options.duration = Some(duration);
+        options.duration = duration;
         let (settings, step) = integrator_settings(a, method, default_step)?;
         let every = match a.every.trim().parse::<u64>() {
             Ok(n) if n >= 1 => n,
