@@ -106,3 +106,50 @@ fn stand_type2_in_current_mode_with_an_ideal_current_loop() {
     assert_eq!(s.drive_mode, DriveMode::Current);
     assert!(s.passed(), "{:?}", s.checks);
 }
+
+/// Voltage mode: the currents are states (L/R = 0.4 ms), so RK4 runs at 50 us; a 1 kHz joint
+/// PD with current output over a 10 kHz current PI.
+#[test]
+fn stand_type2_in_voltage_mode_with_a_cascaded_current_loop() {
+    use biped_sim::controller::{Cascade, CurrentPi};
+    let config = PlantConfig {
+        mode: DriveMode::Voltage,
+        ..PlantConfig::default()
+    };
+    let mut lp = lola_plant(LolaType::Type2, config).unwrap();
+    let opts = ScenarioOptions {
+        duration: Some(1.0),
+        ..ScenarioOptions::lola()
+    };
+    let sc = build(ScenarioKind::Stand, &mut lp.plant, &opts).unwrap();
+    let plant = lp.plant;
+    let (p2, q0, n) = (plant.clone(), sc.q0.clone(), plant.actuators().len());
+    let wrap = |pd: JointPd| {
+        let outer = pd.with_current_output(&p2, &q0)?;
+        Cascade::new(outer, CurrentPi::new(&p2, 1e-4, 2.0, 2000.0)?, n)
+    };
+    let settings = Settings::fixed(5e-5);
+    let (s, sim) = sc
+        .run_wrapped(plant, wrap, Method::Rk4, settings, &mut |_| Ok(()))
+        .unwrap();
+    println!("{}", serde_json::to_string_pretty(&s.checks).unwrap());
+    assert_eq!(s.layout.ncurrent, 25);
+    assert_eq!(s.control_cycles, 10_000);
+    let fell = s
+        .checks
+        .iter()
+        .find(|c| c.name.starts_with("min base"))
+        .unwrap();
+    assert!(fell.passed, "{fell:?}");
+    let err = (s.final_contact_force - s.weight).abs() / s.weight;
+    assert!(
+        err < 1e-2,
+        "contact force {} vs weight {}",
+        s.final_contact_force,
+        s.weight
+    );
+    assert!(
+        sim.sensors().motor_currents.iter().any(|i| i.abs() > 0.1),
+        "motors carry current"
+    );
+}

@@ -3,7 +3,7 @@
 //! the cascade at the inner period.
 
 use super::{Commands, Controller};
-use crate::drive::DriveMode;
+use crate::drive::{DriveMode, Transmission};
 use crate::error::{positive, SimError};
 use crate::plant::Plant;
 use crate::sensors::Sensors;
@@ -85,16 +85,19 @@ impl<O: Controller, I: InnerController> Controller for Cascade<O, I> {
     }
 }
 
-/// Inner current loop: joint-torque setpoint -> current reference `tau / (k_t n)` -> voltage
+/// Inner current loop: current setpoint `i_ref` (or a joint-torque setpoint mapped per
+/// actuator as `tau / (k_t n_nominal)`) -> voltage
 /// `u = R i_ref + k_e omega + k_p (i_ref - i) + k_i int (i_ref - i)` (feed-forward of the
-/// steady-state voltage and back-EMF plus PI).
+/// steady-state voltage and back-EMF plus PI). Direct (motorless) joints pass their torque
+/// setpoint through. Use a current-output outer loop
+/// ([`super::JointPd::with_current_output`]) where motors drive several joints (ankles).
 #[derive(Debug, Clone)]
 pub struct CurrentPi {
     period: f64,
     kp: f64,
     ki: f64,
-    /// Per actuator: `(R, k_e, 1 / (k_t n))`.
-    motors: Vec<(f64, f64, f64)>,
+    /// Per actuator: `(R, k_e, 1 / (k_t n))`, or `None` for a direct joint.
+    motors: Vec<Option<(f64, f64, f64)>>,
     integral: Vec<f64>,
 }
 
@@ -108,11 +111,13 @@ impl CurrentPi {
             .actuators()
             .iter()
             .map(|a| {
-                (
-                    a.motor.resistance,
-                    a.motor.back_emf,
-                    1.0 / (a.motor.torque_constant * a.nominal_ratio),
-                )
+                (a.transmission != Transmission::Direct).then(|| {
+                    (
+                        a.motor.resistance,
+                        a.motor.back_emf,
+                        1.0 / (a.motor.torque_constant * a.nominal_ratio),
+                    )
+                })
             })
             .collect::<Vec<_>>();
         let integral = vec![0.0; motors.len()];
@@ -150,8 +155,15 @@ impl InnerController for CurrentPi {
                 expected: n,
             });
         }
-        for (k, &(r, ke, scale)) in self.motors.iter().enumerate() {
-            let i_ref = sp.values[k] * scale;
+        for (k, motor) in self.motors.iter().enumerate() {
+            let Some((r, ke, scale)) = *motor else {
+                out.values[k] = sp.values[k];
+                continue;
+            };
+            let i_ref = match sp.mode {
+                DriveMode::Current => sp.values[k],
+                _ => sp.values[k] * scale,
+            };
             let e = i_ref - s.motor_currents[k];
             self.integral[k] += e * self.period;
             out.values[k] =

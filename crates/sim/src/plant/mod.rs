@@ -13,7 +13,7 @@ mod inertia;
 pub mod kinematics;
 pub mod layout;
 
-pub use build::{lola_plant, urdf_plant, LolaPlant, UrdfFeet};
+pub use build::{lola_plant, urdf_plant, LolaPlant, UrdfFeet, URDF_GEAR_RATIO};
 pub use energy::Energy;
 pub use inertia::ActuatorInertia;
 pub use layout::StateLayout;
