@@ -193,6 +193,15 @@ fn every_integrator_is_accepted_with_its_rhs_count() {
     }
 }
 
+/// Without --duration, stand runs its own 3 s and comes to rest with its weight on the soles.
+#[test]
+fn default_stand_meets_its_pass_criteria() {
+    let (out, dir) = simulate("stand_default", &["--check"]);
+    let s = summary(&out, &dir);
+    assert_eq!(num(&s, "sim_time"), 3.0);
+    assert_eq!(s["passed"], true, "{}", s["checks"]);
+}
+
 #[test]
 fn every_nth_period_and_the_end_are_recorded() {
     for (duration, rows, last_gap) in [("0.2", 21, 0.01), ("0.205", 22, 0.005)] {
