@@ -46,7 +46,8 @@ fn bad_arguments_fail_with_one_line() {
     for args in [
         vec!["walk", "--method", "foo"],
         vec!["walk", "--steps", "0"],
-        vec!["walk", "--step-time", "-1"],
+        vec!["walk", "--step-time=-1"],
+        vec!["walk", "--step-length=nan"],
         vec!["walk", "--dynamic"],
     ] {
         let out = biped().args(&args).output().unwrap();
