@@ -130,7 +130,8 @@ fn short_stand_writes_csv_plots_and_a_consistent_summary() {
         .map(|f| f.as_str().unwrap())
         .collect();
     for (file, label) in [
-        ("base_height.svg", "CoM z"),
+        ("base_height.svg", "base z"),
+        ("com_height.svg", "CoM z"),
         ("contact_forces.svg", "right.fz"),
         ("foot_shear.svg", "left.fy"),
         ("foot_torques.svg", "left.tz"),

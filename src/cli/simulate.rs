@@ -14,6 +14,7 @@ mod model;
 mod output;
 mod parse;
 mod progress;
+mod report;
 mod setup;
 
 use super::CliResult;
@@ -126,7 +127,7 @@ pub fn run(args: SimulateArgs) -> CliResult {
     };
     let plant = sim.plant();
     let files = output::write_all(&rec, plant, &summary, &info, &out_dir)?;
-    output::print_report(&summary, plant, &rec, &info, &out_dir, &files);
+    report::print_report(&summary, plant, &rec, &info, &out_dir, &files);
     let failed = args.check && !summary.passed();
     Ok(if failed {
         ExitCode::FAILURE

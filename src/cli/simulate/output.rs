@@ -1,13 +1,12 @@
-//! Outputs of `biped simulate`: `signals.csv` (every recorded signal), SVG plots of the
-//! quantities one checks first, `summary.json` (the library's `Summary` plus the run's
-//! description) and the text report on stdout.
+//! Files written by `biped simulate`: `signals.csv` (every recorded signal), SVG plots of the
+//! quantities one checks first and `summary.json`.
 
-use super::setup::{Info, StepRule};
+use super::report::{final_base_height, summary_json};
+use super::setup::Info;
 use biped_sim::plant::Plant;
 use biped_sim::record::Recorder;
 use biped_sim::simulation::{Frame, Summary};
 use biped_sim::SimError;
-use serde_json::{json, Value};
 use std::path::Path;
 
 /// Result of this module.
@@ -57,6 +56,96 @@ impl Line {
     }
 }
 
+/// One SVG: file name, title (without the run description), lines and y-axis label.
+struct Plot {
+    file: &'static str,
+    title: String,
+    lines: Vec<Line>,
+    y_label: &'static str,
+}
+
+/// Lines `<foot>.<c>` for every foot and component.
+fn per_foot(plant: &Plant, components: &[&str]) -> Vec<Line> {
+    let mut lines = Vec::new();
+    for foot in plant.contact().specs() {
+        for c in components {
+            let name = format!("{}.{c}", foot.name);
+            lines.push(Line::new(name.clone(), name));
+        }
+    }
+    lines
+}
+
+/// The plots of a run: base and CoM height, contact forces, foot shear and torques, angular
+/// momentum about the CoM, joint angles and motor currents (the largest [`MAX_LINES`]).
+fn plots(rec: &Recorder, plant: &Plant) -> Vec<Plot> {
+    let plot = |file, title: &str, lines, y_label| Plot {
+        file,
+        title: title.to_string(),
+        lines,
+        y_label,
+    };
+    let mut out = Vec::new();
+    if let Some((qi, _)) = plant.floating_base() {
+        let base = vec![Line::new("base z", format!("q[{}]", qi + 2))];
+        out.push(plot("base_height.svg", "Base height", base, "height [m]"));
+    }
+    let com = vec![Line::new("CoM z", "com.z")];
+    out.push(plot(
+        "com_height.svg",
+        "Centre-of-mass height",
+        com,
+        "height [m]",
+    ));
+    let mut fz = per_foot(plant, &["fz"]);
+    fz.push(Line::new("total", TOTAL_FZ));
+    out.push(plot(
+        "contact_forces.svg",
+        "Vertical contact forces",
+        fz,
+        "force [N]",
+    ));
+    let shear = per_foot(plant, &["fx", "fy"]);
+    out.push(plot(
+        "foot_shear.svg",
+        "Tangential foot forces",
+        shear,
+        "force [N]",
+    ));
+    let torques = per_foot(plant, &["tx", "ty", "tz"]);
+    let title = "Foot torques about the sole point";
+    out.push(plot("foot_torques.svg", title, torques, "torque [N m]"));
+    let l_g = ["x", "y", "z"].map(|c| Line::new(format!("L_G.{c}"), format!("L_G.{c}")));
+    let title = "Angular momentum about the CoM";
+    out.push(plot(
+        "angular_momentum.svg",
+        title,
+        l_g.into(),
+        "L_G [N m s]",
+    ));
+    let acts = plant.actuators();
+    let angles = acts
+        .iter()
+        .map(|a| Line::new(&a.name, format!("q[{}]", a.joint_q)));
+    let title = selected("Joint angles", acts.len());
+    out.push(plot(
+        "joint_angles.svg",
+        &title,
+        largest(rec, angles),
+        "angle [rad]",
+    ));
+    let currents = largest(
+        rec,
+        acts.iter()
+            .map(|a| Line::new(&a.name, format!("i[{}]", a.name))),
+    );
+    if !currents.is_empty() {
+        let title = selected("Motor currents", acts.len());
+        out.push(plot("motor_currents.svg", &title, currents, "current [A]"));
+    }
+    out
+}
+
 /// Writes the CSV, the plots and `summary.json` into `dir`; returns the file names.
 pub fn write_all(
     rec: &Recorder,
@@ -68,84 +157,13 @@ pub fn write_all(
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let mut files = vec!["signals.csv".to_string()];
     rec.write_csv(&dir.join(&files[0]))?;
-    let title = |what: &str| format!("{what} ({} {}, {})", info.model, info.scenario, info.method);
-    let feet: Vec<String> = plant.contact().specs().map(|s| s.name.clone()).collect();
-    let per_foot = |cs: &[&str]| -> Vec<Line> {
-        feet.iter()
-            .flat_map(|f| {
-                cs.iter()
-                    .map(move |c| Line::new(format!("{f}.{c}"), format!("{f}.{c}")))
-            })
-            .collect()
-    };
-    let mut plots: Vec<(&str, String, Vec<Line>, &str)> = Vec::new();
-    if let Some((qi, _)) = plant.floating_base() {
-        let lines = vec![
-            Line::new("base z", format!("q[{}]", qi + 2)),
-            Line::new("CoM z", "com.z"),
-        ];
-        plots.push((
-            "base_height.svg",
-            title("Base and CoM height"),
-            lines,
-            "height [m]",
-        ));
-    }
-    let mut forces = per_foot(&["fz"]);
-    forces.push(Line::new("total", TOTAL_FZ));
-    plots.push((
-        "contact_forces.svg",
-        title("Vertical contact force per foot"),
-        forces,
-        "force [N]",
-    ));
-    plots.push((
-        "foot_shear.svg",
-        title("Tangential foot forces"),
-        per_foot(&["fx", "fy"]),
-        "force [N]",
-    ));
-    plots.push((
-        "foot_torques.svg",
-        title("Foot torques about the sole point"),
-        per_foot(&["tx", "ty", "tz"]),
-        "torque [N m]",
-    ));
-    let l_g = ["x", "y", "z"].map(|c| Line::new(format!("L_G.{c}"), format!("L_G.{c}")));
-    plots.push((
-        "angular_momentum.svg",
-        title("Angular momentum about the CoM"),
-        l_g.into(),
-        "L_G [N m s]",
-    ));
-    let acts = plant.actuators();
-    let angles = largest(
-        rec,
-        acts.iter()
-            .map(|a| Line::new(&a.name, format!("q[{}]", a.joint_q))),
-    );
-    plots.push((
-        "joint_angles.svg",
-        title(&selected("Joint angles", acts.len())),
-        angles,
-        "angle [rad]",
-    ));
-    let currents = largest(
-        rec,
-        acts.iter()
-            .map(|a| Line::new(&a.name, format!("i[{}]", a.name))),
-    );
-    if !currents.is_empty() {
-        plots.push((
-            "motor_currents.svg",
-            title(&selected("Motor currents", acts.len())),
-            currents,
-            "current [A]",
-        ));
-    }
-    for (file, title, lines, y) in plots {
-        plot(rec, &dir.join(file), &title, &lines, y)?;
-        files.push(file.to_string());
+    for p in plots(rec, plant) {
+        let title = format!(
+            "{} ({} {}, {})",
+            p.title, info.model, info.scenario, info.method
+        );
+        plot(rec, &dir.join(p.file), &title, &p.lines, p.y_label)?;
+        files.push(p.file.to_string());
     }
     files.push("summary.json".to_string());
     let json = summary_json(summary, final_base_height(rec, plant), plant, info, &files)?;
@@ -198,86 +216,4 @@ fn plot(rec: &Recorder, path: &Path, title: &str, lines: &[Line], y_label: &str)
     let labels: Vec<&str> = lines.iter().map(|l| l.label.as_str()).collect();
     view.plot_svg(path, title, &labels, y_label)?;
     Ok(())
-}
-
-/// `summary.json`: the library summary plus the run's description and final heights.
-fn summary_json(
-    s: &Summary,
-    base: Option<f64>,
-    plant: &Plant,
-    info: &Info,
-    files: &[String],
-) -> OutResult<Value> {
-    let mut v = serde_json::to_value(s)?;
-    let (step, tolerances) = match info.step {
-        StepRule::Fixed(h) => (json!(h), Value::Null),
-        StepRule::Adaptive(r, a) => (Value::Null, json!({"rtol": r, "atol": a})),
-    };
-    let extra = json!({
-        "model": info.model,
-        "scenario": info.scenario,
-        "step": step,
-        "tolerances": tolerances,
-        "passed": s.passed(),
-        "final_base_height": base,
-        "final_com_height": s.final_com[2],
-        "actuators": plant.actuators().len(),
-        "files": files,
-    });
-    if let (Value::Object(map), Value::Object(more)) = (&mut v, extra) {
-        map.extend(more);
-    }
-    Ok(v)
-}
-
-/// Height of the floating base in the last recorded row.
-fn final_base_height(rec: &Recorder, plant: &Plant) -> Option<f64> {
-    let (qi, _) = plant.floating_base()?;
-    rec.column(&format!("q[{}]", qi + 2)).ok()?.last().copied()
-}
-
-/// Text report on stdout: what ran, how fast, the checks, where the files are.
-pub fn print_report(
-    s: &Summary,
-    plant: &Plant,
-    rec: &Recorder,
-    info: &Info,
-    dir: &Path,
-    files: &[String],
-) {
-    let step = match info.step {
-        StepRule::Fixed(h) => format!("h = {h} s"),
-        StepRule::Adaptive(r, a) => format!("rtol {r:e}, atol {a:e}"),
-    };
-    println!(
-        "{} on {}, {} ({step})",
-        info.scenario, info.model, info.method
-    );
-    println!(
-        "  {:.3} s simulated in {:.3} s: realtime factor {:.3}; {} steps, {} rhs evaluations",
-        s.sim_time, s.wall_time, s.realtime_factor, s.steps, s.rhs_evaluations
-    );
-    if let Some(z) = final_base_height(rec, plant) {
-        println!(
-            "  final base height {z:.4} m, CoM height {:.4} m",
-            s.final_com[2]
-        );
-    }
-    println!(
-        "  contact force: final {:.1} N, max {:.1} N (weight {:.1} N)",
-        s.final_contact_force, s.max_contact_force, s.weight
-    );
-    for c in &s.checks {
-        let verdict = if c.passed { "ok" } else { "FAILED" };
-        println!(
-            "  {verdict:>6}: {} {:.3e} (limit {:.3e})",
-            c.name, c.value, c.limit
-        );
-    }
-    let failed = s.checks.iter().filter(|c| !c.passed).count();
-    match failed {
-        0 => println!("  pass criteria: all {} hold", s.checks.len()),
-        n => println!("  pass criteria: {n} of {} FAILED", s.checks.len()),
-    }
-    println!("wrote {}: {}", dir.display(), files.join(", "));
 }

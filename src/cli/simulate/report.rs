@@ -1,0 +1,94 @@
+//! `summary.json` (the library's `Summary` plus the run's description) and the text report on
+//! stdout.
+
+use super::setup::{Info, StepRule};
+use biped_sim::plant::Plant;
+use biped_sim::record::Recorder;
+use biped_sim::simulation::Summary;
+use serde_json::{json, Value};
+use std::path::Path;
+
+/// Result of this module.
+type OutResult<T> = Result<T, Box<dyn std::error::Error>>;
+
+/// `summary.json`: the library summary plus the run's description and final heights.
+pub fn summary_json(
+    s: &Summary,
+    base: Option<f64>,
+    plant: &Plant,
+    info: &Info,
+    files: &[String],
+) -> OutResult<Value> {
+    let mut v = serde_json::to_value(s)?;
+    let (step, tolerances) = match info.step {
+        StepRule::Fixed(h) => (json!(h), Value::Null),
+        StepRule::Adaptive(r, a) => (Value::Null, json!({"rtol": r, "atol": a})),
+    };
+    let extra = json!({
+        "model": info.model,
+        "scenario": info.scenario,
+        "step": step,
+        "tolerances": tolerances,
+        "passed": s.passed(),
+        "final_base_height": base,
+        "final_com_height": s.final_com[2],
+        "actuators": plant.actuators().len(),
+        "files": files,
+    });
+    if let (Value::Object(map), Value::Object(more)) = (&mut v, extra) {
+        map.extend(more);
+    }
+    Ok(v)
+}
+
+/// Height of the floating base in the last recorded row.
+pub fn final_base_height(rec: &Recorder, plant: &Plant) -> Option<f64> {
+    let (qi, _) = plant.floating_base()?;
+    rec.column(&format!("q[{}]", qi + 2)).ok()?.last().copied()
+}
+
+/// Text report on stdout: what ran, how fast, the checks, where the files are.
+pub fn print_report(
+    s: &Summary,
+    plant: &Plant,
+    rec: &Recorder,
+    info: &Info,
+    dir: &Path,
+    files: &[String],
+) {
+    let step = match info.step {
+        StepRule::Fixed(h) => format!("h = {h} s"),
+        StepRule::Adaptive(r, a) => format!("rtol {r:e}, atol {a:e}"),
+    };
+    println!(
+        "{} on {}, {} ({step})",
+        info.scenario, info.model, info.method
+    );
+    println!(
+        "  {:.3} s simulated in {:.3} s: realtime factor {:.3}; {} steps, {} rhs evaluations",
+        s.sim_time, s.wall_time, s.realtime_factor, s.steps, s.rhs_evaluations
+    );
+    if let Some(z) = final_base_height(rec, plant) {
+        println!(
+            "  final base height {z:.4} m, CoM height {:.4} m",
+            s.final_com[2]
+        );
+    }
+    println!(
+        "  contact force: final {:.1} N, max {:.1} N (weight {:.1} N)",
+        s.final_contact_force, s.max_contact_force, s.weight
+    );
+    for c in &s.checks {
+        let verdict = if c.passed { "ok" } else { "FAILED" };
+        println!(
+            "  {verdict:>6}: {} {:.3e} (limit {:.3e})",
+            c.name, c.value, c.limit
+        );
+    }
+    let failed = s.checks.iter().filter(|c| !c.passed).count();
+    match failed {
+        0 => println!("  pass criteria: all {} hold", s.checks.len()),
+        n => println!("  pass criteria: {n} of {} FAILED", s.checks.len()),
+    }
+    println!("wrote {}: {}", dir.display(), files.join(", "));
+}
