@@ -62,15 +62,31 @@ pub fn urdf_source(
         return Err("--lola: give either --lola TYPE or --urdf FILE, not both".into());
     }
     if !a.floating {
-        return Err(
-            "--urdf: add --floating (the scenarios put a free-floating robot on the ground)".into(),
-        );
+        let why = "--urdf: add --floating (the scenarios put a free-floating robot on the ground)";
+        return Err(why.into());
     }
-    let feet_text = a
+    let feet = urdf_feet(a)?;
+    let config = plant_config(a, Some(URDF_CONTACT))?;
+    let plant = urdf_plant(path, &feet, config).map_err(|e| match e {
+        SimError::InvalidParameter { what, reason } if what == "urdf" => reason,
+        e @ SimError::Unknown { .. } => format!("--feet: {e} in {}", path.display()),
+        e => format!("{}: {e}", path.display()),
+    })?;
+    let options = ScenarioOptions {
+        sway_joints: sway_joints(a, kind)?,
+        ..ScenarioOptions::default()
+    };
+    let step = options.period;
+    Ok((plant, options, path.display().to_string(), step))
+}
+
+/// Sole links and rectangle from `--feet`, `--sole-center`, `--sole-size`.
+fn urdf_feet(a: &SimulateArgs) -> Result<UrdfFeet, String> {
+    let text = a
         .feet
         .as_deref()
         .ok_or("--urdf: add --feet LEFT,RIGHT (the links carrying the soles)")?;
-    let links = names(feet_text, 2, "--feet", "LEFT,RIGHT")?;
+    let links = names(text, 2, "--feet", "LEFT,RIGHT")?;
     let mut feet = UrdfFeet::new(&links[0], &links[1]);
     if let Some(text) = &a.sole_center {
         let c = numbers(text, 3, "--sole-center")?;
@@ -79,37 +95,31 @@ pub fn urdf_source(
     if let Some(text) = &a.sole_size {
         let s = numbers(text, 2, "--sole-size")?;
         if s.iter().any(|x| *x <= 0.0) {
-            return Err(format!("--sole-size: length and width must be > 0, got {text}").into());
+            return Err(format!(
+                "--sole-size: length and width must be > 0, got {text}"
+            ));
         }
         (feet.length, feet.width) = (s[0], s[1]);
     }
-    let config = plant_config(a, Some(URDF_CONTACT))?;
-    let plant = urdf_plant(path, &feet, config).map_err(|e| match e {
-        SimError::InvalidParameter { what, reason } if what == "urdf" => reason,
-        e @ SimError::Unknown { .. } => format!("--feet: {e} in {}", path.display()),
-        e => format!("{}: {e}", path.display()),
-    })?;
-    let sway_joints =
-        match &a.sway_joints {
-            Some(text) => {
-                let j = names(text, 4, "--sway-joints", "HIP_L,HIP_R,ANKLE_L,ANKLE_R")?;
-                Some(SwayJoints {
-                    hips: [j[0].clone(), j[1].clone()],
-                    ankles: [j[2].clone(), j[3].clone()],
-                })
-            }
-            None if kind == ScenarioKind::Sway => return Err(
-                "--scenario sway on a URDF robot needs --sway-joints HIP_L,HIP_R,ANKLE_L,ANKLE_R"
-                    .into(),
-            ),
-            None => None,
-        };
-    let options = ScenarioOptions {
-        sway_joints,
-        ..ScenarioOptions::default()
-    };
-    let step = options.period;
-    Ok((plant, options, path.display().to_string(), step))
+    Ok(feet)
+}
+
+/// Sway joints from `--sway-joints` (required by `sway` on a URDF robot).
+fn sway_joints(a: &SimulateArgs, kind: ScenarioKind) -> Result<Option<SwayJoints>, String> {
+    const SHAPE: &str = "HIP_L,HIP_R,ANKLE_L,ANKLE_R";
+    match &a.sway_joints {
+        Some(text) => {
+            let j = names(text, 4, "--sway-joints", SHAPE)?;
+            Ok(Some(SwayJoints {
+                hips: [j[0].clone(), j[1].clone()],
+                ankles: [j[2].clone(), j[3].clone()],
+            }))
+        }
+        None if kind == ScenarioKind::Sway => Err(format!(
+            "--scenario sway on a URDF robot needs --sway-joints {SHAPE}"
+        )),
+        None => Ok(None),
+    }
 }
 
 /// Plant options: `--contact K,D` (else `default` or the library's contact law).

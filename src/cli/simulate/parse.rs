@@ -9,6 +9,16 @@ pub fn positive(option: &str, text: &str) -> Result<f64, String> {
     }
 }
 
+/// A whole number >= 1.
+pub fn count(option: &str, text: &str) -> Result<u64, String> {
+    match text.trim().parse::<u64>() {
+        Ok(n) if n >= 1 => Ok(n),
+        _ => Err(format!(
+            "{option}: expected a whole number >= 1, got \"{text}\""
+        )),
+    }
+}
+
 /// Exactly `n` comma-separated finite numbers.
 pub fn numbers(text: &str, n: usize, option: &str) -> Result<Vec<f64>, String> {
     let parsed: Result<Vec<f64>, _> = text.split(',').map(|s| s.trim().parse::<f64>()).collect();
@@ -53,6 +63,8 @@ mod tests {
     fn option_values() {
         assert_eq!(positive("--x", " 2.5 "), Ok(2.5));
         assert!(positive("--x", "0").is_err() && positive("--x", "nan").is_err());
+        assert_eq!(count("--n", "12"), Ok(12));
+        assert!(count("--n", "0").is_err() && count("--n", "-1").is_err());
         assert_eq!(numbers("1, -2,3e-1", 3, "--v"), Ok(vec![1.0, -2.0, 0.3]));
         assert!(numbers("1,2", 3, "--v")
             .unwrap_err()

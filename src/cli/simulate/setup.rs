@@ -2,7 +2,7 @@
 //! the integrator. Every input error names the option it comes from.
 
 use super::model::{lola_source, urdf_only, urdf_source};
-use super::parse::{numbers, parse_pose, positive};
+use super::parse::{count, numbers, parse_pose, positive};
 use super::SimulateArgs;
 use biped_sim::controller::JointPd;
 use biped_sim::ode::{Method, Settings};
@@ -26,7 +26,7 @@ pub struct Info {
     pub scenario: &'static str,
     /// Integration method.
     pub method: Method,
-    /// Fixed step \[s] (fixed-step methods) or `(rtol, atol)` (dopri5).
+    /// How the integrator steps.
     pub step: StepRule,
 }
 
@@ -95,12 +95,7 @@ impl Job {
                 lola_source(a)?
             }
         };
-        for (name, angle) in pose {
-            match options.pose.iter_mut().find(|(n, _)| *n == name) {
-                Some(entry) => entry.1 = angle,
-                None => options.pose.push((name, angle)),
-            }
-        }
+        merge_pose(&mut options.pose, pose);
         if let Some(d) = duration.filter(|d| *d < 0.5 * options.period) {
             let p = options.period;
             let why = format!("--duration: {d} s is shorter than one control period ({p} s)");
@@ -108,14 +103,7 @@ impl Job {
         }
         options.duration = duration;
         let (settings, step) = integrator_settings(a, method, default_step)?;
-        let every = match a.every.trim().parse::<u64>() {
-            Ok(n) if n >= 1 => n,
-            _ => {
-                return Err(
-                    format!("--every: expected a whole number >= 1, got \"{}\"", a.every).into(),
-                )
-            }
-        };
+        let every = count("--every", &a.every)?;
         let scenario = build(kind, &mut plant, &options).map_err(|e| match e {
             SimError::Unknown { kind: "joint", .. } => format!("--pose: {e}"),
             e => format!("scenario {}: {e}", name(kind)),
@@ -170,6 +158,16 @@ impl Job {
         let method = self.info.method;
         self.scenario
             .run_with(self.plant, method, self.settings, observer)
+    }
+}
+
+/// Sets the angles of `given` in `pose`, replacing entries of the same joint.
+fn merge_pose(pose: &mut Vec<(String, f64)>, given: Vec<(String, f64)>) {
+    for (name, angle) in given {
+        match pose.iter_mut().find(|(n, _)| *n == name) {
+            Some(entry) => entry.1 = angle,
+            None => pose.push((name, angle)),
+        }
     }
 }
 
