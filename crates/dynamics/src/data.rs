@@ -1,6 +1,7 @@
 //! Preallocated per-call workspace (model/data split): every recursion writes here.
 
 use crate::mechanism::ankle::AnkleLoop;
+use crate::mechanism::knee::KneeLoopCache;
 use crate::mechanism::MechanismError;
 use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
@@ -77,8 +78,12 @@ pub struct Data {
     pub(crate) sub_p: Vec<[f64; MAX_SUBSYSTEM_DOF]>,
     /// Constant frames of Harmonic Drive rotors (placement times initial rotor pose), per body.
     pub(crate) rotor_frame: Vec<SpatialTransform>,
+    /// Spin-invariant `C^T M C` of axisymmetric rotor members (2.76), per body (else `None`).
+    pub(crate) rotor_congruence: Vec<Option<ArticulatedInertia>>,
     /// Last closed ankle slider-crank loop, reused by the actuator's other parts.
     pub(crate) ankle_loop: Option<AnkleLoop>,
+    /// Last closed knee loop, reused by the drive's other parts.
+    pub(crate) knee_loop: Option<KneeLoopCache>,
     /// Body whose mechanism failed in the last kinematics pass (reported as an error).
     pub(crate) mechanism_fault: Option<(usize, MechanismError)>,
     /// Generalized accelerations (output of forward dynamics).
@@ -115,6 +120,7 @@ impl Data {
                 jacobian6[i][(2, 0)] = rotor.params().ratio;
             }
         }
+        let rotor_frames = crate::kinematics::rotor_frames(model);
         let mut col_offset = vec![0; n + 1];
         for (i, b) in model.bodies.iter().enumerate() {
             col_offset[i + 1] = col_offset[i] + b.v_set.len();
@@ -148,8 +154,10 @@ impl Data {
             sub_l: vec![[[0.0; MAX_SUBSYSTEM_DOF]; MAX_SUBSYSTEM_DOF]; ns],
             sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
-            rotor_frame: crate::kinematics::rotor_frames(model),
+            rotor_congruence: crate::subsystem::rotor::constant_congruences(model, &rotor_frames),
+            rotor_frame: rotor_frames,
             ankle_loop: None,
+            knee_loop: None,
             mechanism_fault: None,
             ddq: DVector::zeros(nv),
             tau: DVector::zeros(nv),

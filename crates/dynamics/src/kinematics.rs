@@ -3,7 +3,7 @@
 
 use crate::check;
 use crate::mechanism::harmonic_drive::HarmonicDriveRotor;
-use crate::mechanism::{Coupling, MechanismError, MAX_COUPLED};
+use crate::mechanism::{Coupling, MechanismError, RelativeMotion, MAX_COUPLED};
 use crate::model::coupling::Mechanism;
 use crate::model::joint::{
     euler_zxz_jacobian, euler_zxz_jr_dot_qd, euler_zxz_rotation, quaternion_rotation,
@@ -217,11 +217,14 @@ fn coupled_kinematics(
         qdin[k] = v.map_or(0.0, |v| v[body.v_set.as_slice()[k]]);
     }
     let motion = match mechanism {
-        Mechanism::Ankle(part) => part.motion_cached(&qin[..n], &qdin[..n], &mut data.ankle_loop),
-        _ => mechanism.motion(&qin[..n], &qdin[..n]),
+        Mechanism::Ankle(part) => part.relative_cached(&qin[..n], &qdin[..n], &mut data.ankle_loop),
+        Mechanism::Knee(part) => part.relative_cached(&qin[..n], &qdin[..n], &mut data.knee_loop),
+        _ => mechanism
+            .motion(&qin[..n], &qdin[..n])
+            .map(|m| RelativeMotion::from_coupled(&m)),
     };
     let fault = match motion {
-        Ok(m) if m.pose.translation.vector.iter().all(|x| x.is_finite()) => Ok(m),
+        Ok(m) if m.pos.iter().all(|x| x.is_finite()) => Ok(m),
         Ok(_) => Err(MechanismError::BadInput {
             mechanism: "coupled part",
             reason: "non-finite pose".into(),
@@ -235,7 +238,9 @@ fn coupled_kinematics(
             return (body.placement_x, Motion::zero(), Motion::zero());
         }
     };
-    let x = SpatialTransform::from_pose(&(body.placement * m.pose));
+    // Pose `placement * (A_pk, r)`: `A_kp = A_pk^T A_placement^T`, origin shifted by the placement.
+    let pl = &body.placement_x;
+    let x = SpatialTransform::new(m.rot.tr_mul(&pl.rot), pl.trans + pl.rot.tr_mul(&m.pos));
     let mut rel = Motion::zero();
     for (c, (col, qd)) in m.jacobian.iter().zip(&qdin).take(n).enumerate() {
         data.jacobian6[i].set_column(c, col);

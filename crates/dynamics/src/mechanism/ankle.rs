@@ -27,7 +27,7 @@
 //! this choice equals the screw frame when the rod is parallel to the screw).
 
 use super::jet::{bad_param, seed_inputs, FrameJet, SJet, VJet};
-use super::{CoupledMotion, Coupling, MechanismError};
+use super::{CoupledMotion, Coupling, MechanismError, RelativeMotion};
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 use std::f64::consts::PI;
 use std::ops::{Add, Mul, Sub};
@@ -356,8 +356,7 @@ impl SliderCrank {
     /// Closes the loop (3.23)-(3.29) at the input jets `q = [q_flx, q_add]`.
     fn close_loop(&self, q: &[SJet<2>; 2]) -> Result<Loop, MechanismError> {
         let a = &self.act;
-        let foot_ball = VJet::constant(a.foot_ball)
-            .rotate(&Vector3::x_axis(), q[1])
+        let foot_ball = VJet::rotate_constant(&a.foot_ball, &Vector3::x_axis(), q[1])
             .rotate(&Vector3::y_axis(), q[0])
             .offset(&self.center);
         let r = foot_ball.offset(&-a.screw_top);
@@ -452,6 +451,16 @@ impl AnkleCoupling {
         qd_in: &[f64],
         cache: &mut Option<AnkleLoop>,
     ) -> Result<CoupledMotion, MechanismError> {
+        Ok(self.relative_cached(q_in, qd_in, cache)?.to_coupled())
+    }
+
+    /// [`Self::motion_cached`] as a [`RelativeMotion`] (no quaternion conversion).
+    pub fn relative_cached(
+        &self,
+        q_in: &[f64],
+        qd_in: &[f64],
+        cache: &mut Option<AnkleLoop>,
+    ) -> Result<RelativeMotion, MechanismError> {
         let q = seed_inputs::<2>(NAME, q_in, qd_in)?;
         let (qv, qdv) = ([q[0].v, q[1].v], [q[0].vel, q[1].vel]);
         let hit = cache
@@ -470,7 +479,7 @@ impl AnkleCoupling {
                 lp
             }
         };
-        Ok(self.crank.frame_of(self.part, &lp).motion())
+        Ok(self.crank.frame_of(self.part, &lp).relative())
     }
 }
 

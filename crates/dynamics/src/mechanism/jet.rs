@@ -10,10 +10,8 @@
 //! form without writing each one out by hand. Everything is fixed-size and allocation-free.
 //! [`FrameJet::motion`] turns jets of a part frame's axes and origin into a [`CoupledMotion`].
 
-use super::{CoupledMotion, MechanismError, MAX_COUPLED};
-use nalgebra::{
-    Isometry3, Matrix3, Rotation3, Translation3, Unit, UnitQuaternion, Vector3, Vector6,
-};
+use super::{CoupledMotion, MechanismError, RelativeMotion, MAX_COUPLED};
+use nalgebra::{Matrix3, Rotation3, Unit, Vector3, Vector6};
 use std::ops::{Add, Sub};
 
 /// Scalar jet: value, partials, first and (zero-`qdd`) second time derivative.
@@ -212,6 +210,22 @@ impl<const N: usize> VJet<N> {
                 + rot * self.acc,
         }
     }
+
+    /// `Rot(axis, angle) * c` for a constant vector `c`: [`Self::rotate`] of
+    /// `VJet::constant(c)` without the products of zero derivatives (Rodrigues' formula).
+    pub fn rotate_constant(c: &Vector3<f64>, axis: &Unit<Vector3<f64>>, angle: SJet<N>) -> Self {
+        let k = axis.as_ref();
+        let (s, co) = angle.v.sin_cos();
+        let kc = k.cross(c);
+        let rv = c * co + kc * s + k * (k.dot(c) * (1.0 - co));
+        let krv = k.cross(&rv);
+        Self {
+            v: rv,
+            d: std::array::from_fn(|j| krv * angle.d[j]),
+            vel: krv * angle.vel,
+            acc: krv * angle.acc + k.cross(&krv) * (angle.vel * angle.vel),
+        }
+    }
 }
 
 /// `SJet add` (exact derivative propagation).
@@ -321,11 +335,16 @@ impl<const N: usize> FrameJet<N> {
     }
 
     /// Pose, relative-twist Jacobian and bias (module doc of [`super`]) of this frame.
+    pub fn motion(&self) -> CoupledMotion {
+        self.relative().to_coupled()
+    }
+
+    /// [`Self::motion`] with the pose as a rotation matrix (columns x, y, z) and origin.
     ///
     /// Body angular velocity components are `(ydot.z, zdot.x, xdot.y)` and the body linear
     /// velocity components `(x.pdot, y.pdot, z.pdot)`; their partials give the Jacobian columns
     /// and their time derivatives at `qdd = 0` the bias.
-    pub fn motion(&self) -> CoupledMotion {
+    pub fn relative(&self) -> RelativeMotion {
         let (x, y, z, p) = (&self.x, &self.y, &self.z, &self.p);
         let ang = |a: &VJet<N>, b: &VJet<N>, j: usize| a.d[j].dot(&b.v);
         let lin = |a: &VJet<N>, j: usize| a.v.dot(&p.d[j]);
@@ -353,10 +372,9 @@ impl<const N: usize> FrameJet<N> {
             blin(y),
             blin(z),
         );
-        let m = Matrix3::from_columns(&[x.v, y.v, z.v]);
-        let rot = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(m));
-        CoupledMotion {
-            pose: Isometry3::from_parts(Translation3::from(p.v), rot),
+        RelativeMotion {
+            rot: Matrix3::from_columns(&[x.v, y.v, z.v]),
+            pos: p.v,
             jacobian,
             bias,
         }
@@ -389,5 +407,33 @@ pub fn bad_param(mechanism: &'static str, what: &str) -> MechanismError {
     MechanismError::BadInput {
         mechanism,
         reason: format!("invalid parameter: {what}"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The constant-vector fast path equals the general rotation of a constant jet.
+        #[test]
+        fn rotate_constant_equals_rotate(
+            c in prop::array::uniform3(-2.0..2.0f64), k in prop::array::uniform3(-1.0..1.0f64),
+            q in prop::array::uniform2(-3.0..3.0f64), qd in prop::array::uniform2(-3.0..3.0f64),
+        ) {
+            let k = Vector3::from(k);
+            prop_assume!(k.norm() > 1e-3);
+            let axis = Unit::new_normalize(k);
+            let qj = seed_inputs::<2>("test", &q, &qd).expect("finite");
+            let angle = qj[0] * qj[1].sin();
+            let c = Vector3::from(c);
+            let fast = VJet::rotate_constant(&c, &axis, angle);
+            let slow = VJet::constant(c).rotate(&axis, angle);
+            let close = |a: &Vector3<f64>, b: &Vector3<f64>| (a - b).amax() <= 1e-13 * (1.0 + b.amax());
+            prop_assert!(close(&fast.v, &slow.v));
+            prop_assert!(close(&fast.vel, &slow.vel) && close(&fast.acc, &slow.acc));
+            prop_assert!(close(&fast.d[0], &slow.d[0]) && close(&fast.d[1], &slow.d[1]));
+        }
     }
 }

@@ -32,7 +32,7 @@
 //! `rdot.rdot + r.rddot - ldot^2` (the extracted text drops the square).
 
 use super::jet::{bad_param, seed_inputs, FrameJet, SJet, VJet};
-use super::{CoupledMotion, Coupling, MechanismError};
+use super::{CoupledMotion, Coupling, MechanismError, RelativeMotion};
 use nalgebra::{Vector2, Vector3};
 use std::f64::consts::PI;
 use std::ops::Add;
@@ -171,8 +171,7 @@ impl KneeDrive {
     fn screw_vector(&self, q: SJet<1>) -> VJet<1> {
         let a = &self.params.pin_shank;
         let b = &self.params.pivot_thigh;
-        VJet::constant(Vector3::new(a.x, a.y, 0.0))
-            .rotate(&Vector3::z_axis(), q)
+        VJet::rotate_constant(&Vector3::new(a.x, a.y, 0.0), &Vector3::z_axis(), q)
             .offset(&Vector3::new(-b.x, -b.y, 0.0))
     }
 
@@ -270,20 +269,31 @@ impl KneeDrive {
 
     /// Frame jets of a part at the knee-angle jet `q`.
     fn frame(&self, part: KneePart, q: SJet<1>) -> Result<FrameJet<1>, MechanismError> {
+        Ok(self.frame_of(part, &self.close_loop(q)?))
+    }
+
+    /// Closes the loop (3.4) at `q`: the housing frame and the screw length, shared by all parts.
+    fn close_loop(&self, q: SJet<1>) -> Result<KneeLoop, MechanismError> {
         let r = self.screw_vector(q);
-        let l = self.screw_length(&r, q.v)?;
+        let length = self.screw_length(&r, q.v)?;
         let axis = if self.params.screw_tilt {
-            r.scale(l.recip())
+            r.scale(length.recip())
         } else {
             VJet::constant(self.fixed_axis)
         };
         let b = &self.params.pivot_thigh;
         let pivot = VJet::constant(Vector3::new(b.x, b.y, 0.0));
         let housing = FrameJet::from_direction(axis, &Vector3::z(), pivot);
-        Ok(match part {
+        Ok(KneeLoop { housing, length })
+    }
+
+    /// Frame jets of a part from the closed loop (3.8)-(3.21).
+    fn frame_of(&self, part: KneePart, lp: &KneeLoop) -> FrameJet<1> {
+        let (housing, l) = (lp.housing, lp.length);
+        match part {
             KneePart::Housing => housing,
             KneePart::Nut => FrameJet {
-                p: pivot.add(axis.scale(l)),
+                p: housing.p.add(housing.z.scale(l)),
                 ..housing
             },
             KneePart::Rotor => {
@@ -292,8 +302,25 @@ impl KneeDrive {
                     .add(SJet::constant(self.params.motor_offset));
                 housing.spin_z(phi)
             }
-        })
+        }
     }
+}
+
+/// The knee loop (3.4) closed at one input: housing frame jets and screw length `l_screw`.
+#[derive(Debug, Clone, Copy)]
+struct KneeLoop {
+    housing: FrameJet<1>,
+    length: SJet<1>,
+}
+
+/// A closed knee loop at given inputs, shared by the three parts (housing, nut, rotor) of one
+/// drive so that (3.4) is solved once per drive, not once per part.
+#[derive(Debug, Clone, Copy)]
+pub struct KneeLoopCache {
+    drive: KneeDrive,
+    q: f64,
+    qd: f64,
+    lp: KneeLoop,
 }
 
 /// One part of a [`KneeDrive`] as a [`Coupling`] (input: the knee angle).
@@ -314,5 +341,65 @@ impl Coupling for KneeCoupling {
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
         let [q] = seed_inputs::<1>(NAME, q_in, qd_in)?;
         Ok(self.drive.frame(self.part, q)?.motion())
+    }
+}
+
+impl KneeCoupling {
+    /// [`Coupling::motion`] as a [`RelativeMotion`], reusing `cache` when it holds this drive's
+    /// loop closed at exactly the same `(q_in, qd_in)`, else closing it and storing it.
+    pub fn relative_cached(
+        &self,
+        q_in: &[f64],
+        qd_in: &[f64],
+        cache: &mut Option<KneeLoopCache>,
+    ) -> Result<RelativeMotion, MechanismError> {
+        let [q] = seed_inputs::<1>(NAME, q_in, qd_in)?;
+        let hit = cache
+            .as_ref()
+            .filter(|c| c.q == q.v && c.qd == q.vel && c.drive == self.drive);
+        let lp = match hit {
+            Some(c) => c.lp,
+            None => {
+                let lp = self.drive.close_loop(q)?;
+                *cache = Some(KneeLoopCache {
+                    drive: self.drive,
+                    q: q.v,
+                    qd: q.vel,
+                    lp,
+                });
+                lp
+            }
+        };
+        Ok(self.drive.frame_of(self.part, &lp).relative())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The cached evaluation equals the uncached one part by part, across drives (tilt on and
+    /// off: cache misses on a different drive) and inputs (misses on different `q` or `qd`).
+    #[test]
+    fn cached_relative_equals_motion() {
+        let tilt = KneeDrive::new(KneeDriveParams::default()).expect("default drive");
+        let fixed = KneeDrive::new(KneeDriveParams {
+            screw_tilt: false,
+            ..KneeDriveParams::default()
+        })
+        .expect("fixed-axis drive");
+        let mut cache = None;
+        for (q, qd) in [(0.4, 0.3), (0.4, -0.2), (1.1, 0.0)] {
+            for drive in [tilt, fixed] {
+                for part in [KneePart::Housing, KneePart::Nut, KneePart::Rotor] {
+                    let c = drive.part(part);
+                    let fast = c.relative_cached(&[q], &[qd], &mut cache).expect("cached");
+                    assert_eq!(fast.to_coupled(), c.motion(&[q], &[qd]).expect("motion"));
+                    assert_eq!(cache.as_ref().map(|l| l.drive), Some(drive));
+                }
+            }
+        }
+        let c = tilt.part(KneePart::Nut);
+        assert!(c.relative_cached(&[f64::NAN], &[0.0], &mut cache).is_err());
     }
 }

@@ -22,7 +22,7 @@ pub mod jet;
 pub mod knee;
 pub mod vergence;
 
-use nalgebra::{Isometry3, Vector6};
+use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3, Vector6};
 use thiserror::Error;
 
 /// Largest number of input coordinates a coupled part may depend on.
@@ -37,6 +37,42 @@ pub struct CoupledMotion {
     pub jacobian: [Vector6<f64>; MAX_COUPLED],
     /// Relative-acceleration bias `Jdot qd_in` (part frame, `[angular; linear]`).
     pub bias: Vector6<f64>,
+}
+
+/// [`CoupledMotion`] with the pose as a rotation matrix and origin: the quaternion-free form
+/// the kinematics consumes (no matrix -> quaternion -> matrix round trip on the hot path).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RelativeMotion {
+    /// Rotation `A_pk`: the part axes as columns, in parent coordinates.
+    pub rot: Matrix3<f64>,
+    /// Origin of the part frame in parent coordinates.
+    pub pos: Vector3<f64>,
+    /// Relative-twist Jacobian columns (as in [`CoupledMotion::jacobian`]).
+    pub jacobian: [Vector6<f64>; MAX_COUPLED],
+    /// Relative-acceleration bias (as in [`CoupledMotion::bias`]).
+    pub bias: Vector6<f64>,
+}
+
+impl RelativeMotion {
+    /// The same motion with the pose as an isometry (rotation converted to a quaternion).
+    pub fn to_coupled(&self) -> CoupledMotion {
+        let rot = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(self.rot));
+        CoupledMotion {
+            pose: Isometry3::from_parts(Translation3::from(self.pos), rot),
+            jacobian: self.jacobian,
+            bias: self.bias,
+        }
+    }
+
+    /// The motion of a [`CoupledMotion`] (quaternion converted to a rotation matrix).
+    pub fn from_coupled(m: &CoupledMotion) -> Self {
+        Self {
+            rot: m.pose.rotation.to_rotation_matrix().into_inner(),
+            pos: m.pose.translation.vector,
+            jacobian: m.jacobian,
+            bias: m.bias,
+        }
+    }
 }
 
 /// Why a mechanism cannot be evaluated at the given input.

@@ -9,6 +9,7 @@
 
 mod generate;
 pub(crate) mod on;
+pub(crate) mod rotor;
 
 pub(crate) use generate::generate;
 

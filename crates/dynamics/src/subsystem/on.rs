@@ -123,7 +123,9 @@ fn backward_n<const N: usize>(
             rhs[c] -= jj[c].dot(&hat_f);
         }
         if sub.parent.is_some() {
-            if sub.rigid_member[mi] {
+            if let Some(k) = &data.rotor_congruence[j] {
+                kc += *k;
+            } else if sub.rigid_member[mi] {
                 add_rigid_congruence(&model.bodies[j].inertia, cj, &mut kc);
             } else {
                 m.add_tr_transform_to(cj, &mut kc);
@@ -161,7 +163,7 @@ fn backward_n<const N: usize>(
 /// a member without children outside, whose `M-hat_j` is still `M_j`): in parent axes the
 /// CoM is `c = A^T c_j + r`, and `C^T M C = [I_c' + m (|c|^2 E - c c^T), m c~; -m c~, m E]`.
 #[inline]
-fn add_rigid_congruence(
+pub(crate) fn add_rigid_congruence(
     inertia: &RigidInertia,
     x: &SpatialTransform,
     out: &mut ArticulatedInertia,
