@@ -3,7 +3,7 @@
 
 use crate::jacobian::{shape, JacobianError, Jacobians};
 use crate::kinematics::propagate_accelerations;
-use crate::spatial::{ArticulatedInertia, Force, SpatialTransform};
+use crate::spatial::{CompositeInertia, Force, SpatialTransform};
 use crate::{Data, Model};
 use nalgebra::{DMatrix, DVector, Vector3};
 
@@ -16,7 +16,7 @@ pub struct Centroidal {
     /// Subtree first moments `sum m_k r_Ck` (world).
     sub_moment: Vec<Vector3<f64>>,
     /// Subtree inertias in world axes about the world origin.
-    sub_inertia: Vec<ArticulatedInertia>,
+    sub_inertia: Vec<CompositeInertia>,
     mass: f64,
     com: Vector3<f64>,
     com_velocity: Vector3<f64>,
@@ -35,7 +35,7 @@ impl Centroidal {
             jac: Jacobians::new(model),
             sub_mass: vec![0.0; n],
             sub_moment: vec![Vector3::zeros(); n],
-            sub_inertia: vec![ArticulatedInertia::zero(); n],
+            sub_inertia: vec![CompositeInertia::default(); n],
             mass: 0.0,
             com: Vector3::zeros(),
             com_velocity: Vector3::zeros(),
@@ -138,19 +138,14 @@ impl Centroidal {
     /// Composite inertias, total mass, CoM and `A_G` from the poses and columns.
     fn assemble(&mut self, model: &Model, data: &Data) -> Result<(), JacobianError> {
         self.composite_inertias(model, data);
-        let mut total = ArticulatedInertia::zero();
+        let mut total = CompositeInertia::default();
         for (i, body) in model.bodies().iter().enumerate() {
             if body.parent().is_none() {
                 total += self.sub_inertia[i];
             }
         }
-        self.mass = total.lin[(0, 0)];
-        let moment = Vector3::new(
-            total.cross[(2, 1)],
-            total.cross[(0, 2)],
-            total.cross[(1, 0)],
-        );
-        self.set_com(&moment)?;
+        self.mass = total.mass;
+        self.set_com(&total.h)?;
         self.fill_ag(model);
         self.have_ag = true;
         Ok(())
@@ -231,9 +226,8 @@ impl Centroidal {
     /// Subtree inertias in world axes about the world origin (leaves to root).
     fn composite_inertias(&mut self, model: &Model, data: &Data) {
         for (i, body) in model.bodies().iter().enumerate() {
-            self.sub_inertia[i] = body
-                .inertia()
-                .to_world(&data.world_rot[i], &data.world_pos[i]);
+            self.sub_inertia[i] =
+                CompositeInertia::from_body(body.inertia(), &data.world_rot[i], &data.world_pos[i]);
         }
         for i in (0..model.nbodies()).rev() {
             if let Some(p) = model.bodies()[i].parent() {

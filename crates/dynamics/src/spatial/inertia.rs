@@ -1,6 +1,6 @@
 //! Rigid-body inertia: mass, first moment `h = m c` and rotational inertia (2.21)-(2.22).
 
-use super::{skew, ArticulatedInertia, Force, Motion};
+use super::{skew, ArticulatedInertia, CompositeInertia, Force, Motion};
 use crate::ModelError;
 use nalgebra::{Isometry3, Matrix3, Matrix6, Vector3};
 
@@ -175,15 +175,7 @@ impl RigidInertia {
     /// (body axes in world coordinates) and origin `pos`: `C^T M C` with `C` world-to-body.
     #[inline]
     pub fn to_world(&self, rot: &Matrix3<f64>, pos: &Vector3<f64>) -> ArticulatedInertia {
-        let c = rot * self.com + pos;
-        let h = c * self.mass;
-        let ic = rot * self.inertia_com * rot.transpose();
-        let s = skew(&c);
-        ArticulatedInertia {
-            ang: ic - s * s * self.mass,
-            cross: skew(&h),
-            lin: Matrix3::identity() * self.mass,
-        }
+        CompositeInertia::from_body(self, rot, pos).to_articulated()
     }
 
     /// Dense 6x6 matrix `M` of (2.22).

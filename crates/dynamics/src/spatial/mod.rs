@@ -19,6 +19,7 @@
 
 mod articulated;
 mod axis;
+mod composite;
 mod force;
 mod inertia;
 mod motion;
@@ -27,6 +28,7 @@ mod vector;
 
 pub use articulated::ArticulatedInertia;
 pub use axis::{Axis, JointAxis, SubspaceKind};
+pub use composite::CompositeInertia;
 pub use force::{Force, Wrench};
 pub use inertia::RigidInertia;
 pub use motion::Motion;
