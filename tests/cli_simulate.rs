@@ -323,6 +323,23 @@ fn default_output_folder_is_per_scenario() {
         "",
     );
     summary(&out, &dir);
+    // An output folder that cannot be created: one line naming it.
+    let file = cwd.join("cli_simulate_not_a_folder");
+    std::fs::write(&file, "").unwrap();
+    let bad = file.join("sub");
+    let out = run(
+        &[
+            "simulate",
+            "--duration",
+            "0.005",
+            "--out",
+            bad.to_str().unwrap(),
+        ],
+        "",
+    );
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success() && err.lines().count() == 1, "{err}");
+    assert!(err.contains("cli_simulate_not_a_folder/sub"), "{err}");
 }
 
 #[test]
