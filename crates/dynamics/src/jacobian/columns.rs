@@ -8,7 +8,7 @@ use super::error::JacobianError;
 use crate::check;
 use crate::kinematics::body_kinematics;
 use crate::model::joint::Joint;
-use crate::spatial::{Motion, SpatialTransform};
+use crate::spatial::{JointAxis, Motion, SpatialTransform, SubspaceKind};
 use crate::{Data, DynamicsError, Model};
 use nalgebra::{DVector, Matrix3, Vector3};
 
@@ -178,7 +178,16 @@ impl Jacobians {
             self.omega[i] = Vector3::zeros();
             self.pos_dot[i] = Vector3::zeros();
         }
-        let vel_world = to_world.inv_apply_motion(&vel);
+        if let (Joint::Revolute(ax) | Joint::Rotor(ax), None) = (&body.joint, rates) {
+            if ax.kind == SubspaceKind::Angular {
+                self.col[self.offset[i]] = revolute_world_column(ax, &rot, &pos);
+                return;
+            }
+        }
+        let vel_world = match rates {
+            Some(_) => to_world.inv_apply_motion(&vel),
+            None => Motion::zero(),
+        };
         for c in 0..body.v_set.len() {
             let k = self.offset[i] + c;
             let s = local_column(data, i, &body.joint, c);
@@ -190,6 +199,15 @@ impl Jacobians {
             }
         }
     }
+}
+
+/// World column `[R a s; p x (R a s)]` of a revolute joint (axis `a`, scale `s`) of a body with
+/// world rotation `R` and origin `p`: [`SpatialTransform::inv_apply_motion`] of `[a s; 0]`
+/// without the zero linear part (one column of `R` for a coordinate axis).
+#[inline]
+fn revolute_world_column(ax: &JointAxis, rot: &Matrix3<f64>, pos: &Vector3<f64>) -> Motion {
+    let ang = ax.axis.mat_mul(rot) * ax.scale;
+    Motion::new(ang, pos.cross(&ang))
 }
 
 /// Column `c` of body `i`'s relative Jacobian `J_i` (2.35) in body coordinates.
