@@ -170,3 +170,35 @@ fn symmetrize(m: &Matrix3<f64>) -> Matrix3<f64> {
         m[(2, 2)],
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Isometry3;
+
+    /// Against the dense `C^T I C` for a general (not rigid-body) symmetric inertia.
+    #[test]
+    fn tr_transform_matches_dense_congruence() {
+        let l = Matrix6::from_fn(|i, j| {
+            if j <= i {
+                0.6 + ((3 * i + 7 * j) % 5) as f64 * 0.3
+            } else {
+                0.0
+            }
+        });
+        let dense = l * l.transpose();
+        let art = ArticulatedInertia::from_matrix(&dense);
+        for (t, w) in [(0.3, -0.1, 0.7), (-1.2, 0.4, 0.05)]
+            .into_iter()
+            .zip([0.9, -2.1])
+        {
+            let pose = Isometry3::new(Vector3::new(t.0, t.1, t.2), Vector3::new(w, 0.4 * w, 1.2));
+            let x = SpatialTransform::from_pose(&pose);
+            let c = x.to_matrix();
+            let expect = c.transpose() * dense * c;
+            let got = art.tr_transform(&x).to_matrix();
+            assert!((got - expect).amax() < 1e-12 * expect.amax());
+            assert_eq!(got, got.transpose());
+        }
+    }
+}
