@@ -1,8 +1,12 @@
 //! Criterion benchmarks of forward dynamics on the Lola-like models Type 2 and Type 3 (thesis
 //! 2.10.2, Table 2.6 / Fig. 2.21): O(n) with sub-systems, CRBA + Cholesky, CRBA + sparse
-//! `L^T L`, and the three O(n) passes, at one reproducible random state inside the joint ranges.
+//! `L^T L`, and the three O(n) passes, at one reproducible random state inside the joint ranges;
+//! plus the inverse-kinematics path: forward kinematics, world Jacobian columns and the
+//! centroidal momentum matrix `A_G`.
 
-use biped_dynamics::{forward_dynamics, on, Algorithm, Data};
+use biped_dynamics::{
+    forward_dynamics, forward_kinematics, on, Algorithm, Centroidal, Data, Jacobians,
+};
 use biped_robots::lola::{self, LolaType};
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::DVector;
@@ -46,6 +50,17 @@ fn bench_lola(c: &mut Criterion) {
         });
         group.bench_function("on_fw2", |b| {
             b.iter(|| black_box(on::forward_pass_2(m, &mut data).len()))
+        });
+        let mut jac = Jacobians::new(m);
+        let mut cen = Centroidal::new(m);
+        group.bench_function("fk", |b| {
+            b.iter(|| black_box(forward_kinematics(m, &mut data, &q, &v, &tau).is_ok()))
+        });
+        group.bench_function("jacobians", |b| {
+            b.iter(|| black_box(jac.compute(m, &mut data, &q).is_ok()))
+        });
+        group.bench_function("centroidal_matrix", |b| {
+            b.iter(|| black_box(cen.compute_matrix(m, &mut data, &q).is_ok()))
         });
         group.finish();
     }
