@@ -3,8 +3,8 @@
 
 use super::CliResult;
 use biped_control::pattern::WalkingPattern;
-use biped_control::walk::{run_walk, walk_pattern_params, Method, WalkParams, WalkRun};
 use biped_control::walk::run::RECORDED_JOINTS;
+use biped_control::walk::{run_walk, walk_pattern_params, Method, WalkParams, WalkRun};
 use biped_robots::lola::{self, LolaType};
 use biped_sim::Recorder;
 use clap::Args;
@@ -61,7 +61,12 @@ pub fn run(args: WalkArgs) -> CliResult {
     write_plots(&runs, &args.out)?;
     let summary: serde_json::Map<String, serde_json::Value> = runs
         .iter()
-        .map(|r| Ok((r.method.name().to_string(), serde_json::to_value(r.summary)?)))
+        .map(|r| {
+            Ok((
+                r.method.name().to_string(),
+                serde_json::to_value(r.summary)?,
+            ))
+        })
         .collect::<Result<_, serde_json::Error>>()?;
     let text = serde_json::to_string_pretty(&summary)?;
     std::fs::write(args.out.join("summary.json"), text)?;
@@ -100,7 +105,10 @@ fn write_plots(runs: &[WalkRun], out: &Path) -> Result<(), Box<dyn std::error::E
             rec.set(&format!("tau_z {}", r.method), r.series.tau_z[k])?;
         }
     }
-    for (sig, unit, file) in [("L_z", "L_z [N m s]", "lz.svg"), ("tau_z", "tau_z [N m]", "tau_z.svg")] {
+    for (sig, unit, file) in [
+        ("L_z", "L_z [N m s]", "lz.svg"),
+        ("tau_z", "tau_z [N m]", "tau_z.svg"),
+    ] {
         let names: Vec<String> = runs.iter().map(|r| format!("{sig} {}", r.method)).collect();
         let refs: Vec<&str> = names.iter().map(String::as_str).collect();
         let title = format!("{sig} during walking, arm methods compared");

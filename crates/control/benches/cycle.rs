@@ -9,8 +9,9 @@ use std::hint::black_box;
 
 fn cycle(c: &mut Criterion) {
     let lola = lola::build(LolaType::Type2).expect("model");
-    let pattern = WalkingPattern::generate(&walk_pattern_params(&lola, 2, 0.4, 0.8).expect("params"))
-        .expect("pattern");
+    let pattern =
+        WalkingPattern::generate(&walk_pattern_params(&lola, 2, 0.4, 0.8).expect("params"))
+            .expect("pattern");
     // a mid-step sample (single support, arms swinging)
     let k = pattern.len() / 2;
     let sample = pattern.sample(k).expect("sample");

@@ -70,6 +70,8 @@ pub struct Rmrc {
     wjt: DMatrix<f64>,
     z: DVector<f64>,
     lambda: DVector<f64>,
+    /// Rows of the factorisation held in `b` (None before the first successful solve).
+    factored: Option<usize>,
 }
 
 impl Rmrc {
@@ -83,6 +85,7 @@ impl Rmrc {
             wjt: DMatrix::zeros(n, m_max),
             z: DVector::zeros(n),
             lambda: DVector::zeros(m_max),
+            factored: None,
         }
     }
 
@@ -100,6 +103,35 @@ impl Rmrc {
     pub fn solve(&mut self, p: &RmrcProblem<'_>, qdot: &mut DVector<f64>) -> Result<(), IkError> {
         let m = p.rows;
         self.check(p, qdot)?;
+        self.factored = None;
+        self.null_space_step(p)?;
+        self.assemble(p.jacobian, m, p.weight)?;
+        for i in 0..m {
+            self.b[(i, i)] += p.damping + p.softness.map_or(0.0, |s| s[i]);
+        }
+        cholesky_in_place(&mut self.b, m)?;
+        self.factored = Some(m);
+        self.back_substitute(p, qdot)
+    }
+
+    /// Same as [`Self::solve`] for a problem with the Jacobian, weight, damping and softness
+    /// of the last successful `solve` (only `xdot` and the null-space term may differ):
+    /// reuses the factorisation, O(m n) instead of O(m^2 n). RMRC is linear in
+    /// `(xdot, grad_H)`, so responses to separate inputs can be superposed.
+    pub fn resolve(&mut self, p: &RmrcProblem<'_>, qdot: &mut DVector<f64>) -> Result<(), IkError> {
+        self.check(p, qdot)?;
+        if self.factored != Some(p.rows) {
+            return Err(IkError::InvalidParameter {
+                name: "resolve",
+                reason: "needs a preceding solve with the same rows",
+            });
+        }
+        self.null_space_step(p)?;
+        self.back_substitute(p, qdot)
+    }
+
+    /// `z = -alpha_N W^-1 grad_H` (0 without a null-space term).
+    fn null_space_step(&mut self, p: &RmrcProblem<'_>) -> Result<(), IkError> {
         match p.null_space {
             Some((grad, alpha)) => {
                 check_dim("null-space gradient", self.n, grad.len())?;
@@ -109,14 +141,20 @@ impl Rmrc {
             }
             None => self.z.fill(0.0),
         }
-        self.assemble(p.jacobian, m, p.weight)?;
-        let n = self.n;
+        Ok(())
+    }
+
+    /// `lambda` from the factor and `qdot = W^-1 J^T lambda + z` (Alg. 4.3 lines 3-5).
+    fn back_substitute(
+        &mut self,
+        p: &RmrcProblem<'_>,
+        qdot: &mut DVector<f64>,
+    ) -> Result<(), IkError> {
+        let (m, n) = (p.rows, self.n);
         for i in 0..m {
             let ji = &self.jt.as_slice()[i * n..(i + 1) * n];
             self.lambda[i] = p.xdot[i] - dot(ji, self.z.as_slice());
-            self.b[(i, i)] += p.damping + p.softness.map_or(0.0, |s| s[i]);
         }
-        cholesky_in_place(&mut self.b, m)?;
         cholesky_solve_in_place(&self.b, m, &mut self.lambda);
         qdot.copy_from(&self.z);
         let out = qdot.as_mut_slice();
@@ -133,6 +171,7 @@ impl Rmrc {
     /// the Cholesky factor (`prod L_ii`); 0 if `J J^T` is numerically singular.
     pub fn manipulability(&mut self, jacobian: &DMatrix<f64>, rows: usize) -> Result<f64, IkError> {
         self.check_jacobian(jacobian, rows)?;
+        self.factored = None;
         self.assemble(jacobian, rows, &Weight::Identity)?;
         match cholesky_in_place(&mut self.b, rows) {
             Ok(()) => Ok((0..rows).map(|i| self.b[(i, i)]).product()),

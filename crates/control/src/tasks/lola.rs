@@ -368,7 +368,11 @@ fn planning_rotation(yaw: f64) -> Matrix3<f64> {
 /// `J_C` (3 x nv) from the centroidal momentum matrix `A_G = [J_L; m J_C]`.
 fn com_jacobian_from_ag(ag: &DMatrix<f64>, mass: f64, jc: &mut DMatrix<f64>) {
     let inv = 1.0 / mass;
-    for (dst, col) in jc.as_mut_slice().chunks_exact_mut(3).zip(ag.as_slice().chunks_exact(6)) {
+    for (dst, col) in jc
+        .as_mut_slice()
+        .chunks_exact_mut(3)
+        .zip(ag.as_slice().chunks_exact(6))
+    {
         for r in 0..3 {
             dst[r] = col[3 + r] * inv;
         }

@@ -42,6 +42,9 @@ pub struct WalkController {
     xcmd: DVector<f64>,
     grad: DVector<f64>,
     grad_c: DVector<f64>,
+    dir: DVector<f64>,
+    zero_x: DVector<f64>,
+    qdot_r: DVector<f64>,
     weight: Weight,
     cost: JointCost,
     avoid: Option<CollisionAvoidance>,
@@ -102,7 +105,11 @@ impl WalkController {
         )?;
         let avoid = if params.avoidance {
             let segments = lola_collision_model(lola).map_err(model_err)?.model;
-            Some(CollisionAvoidance::new(model, segments, AvoidanceParams::default())?)
+            Some(CollisionAvoidance::new(
+                model,
+                segments,
+                AvoidanceParams::default(),
+            )?)
         } else {
             None
         };
@@ -127,6 +134,9 @@ impl WalkController {
             xcmd: DVector::zeros(TaskId::TOTAL_ROWS),
             grad: DVector::zeros(nv),
             grad_c: DVector::zeros(nv),
+            dir: DVector::zeros(nv),
+            zero_x: DVector::zeros(TaskId::TOTAL_ROWS),
+            qdot_r: DVector::zeros(nv),
             weight,
             cost,
             avoid,
@@ -169,22 +179,20 @@ impl WalkController {
                 let (data, jac) = self.tasks.kinematics();
                 self.grad_c.fill(0.0);
                 let sum = a.gradient(self.tasks.model(), data, jac, &mut self.grad_c)?;
-                self.grad.axpy(self.params.avoidance_gain * scale, &self.grad_c, 1.0);
+                self.grad
+                    .axpy(self.params.avoidance_gain * scale, &self.grad_c, 1.0);
                 Some(sum)
             }
             None => None,
         };
         self.vm.update(self.tasks.centroidal())?;
-        match self.method {
-            Method::Compensation => {
-                let l_ref = self.reference.sample(s.t).0;
-                let jlz = self.vm.jacobian_z();
-                self.comp.add_to(jlz, &self.qdot, l_ref, &mut self.grad)?;
-            }
-            Method::Minimization => self.minim.update(self.vm.jacobian_z(), &mut self.weight)?,
-            _ => {}
+        if self.method == Method::Minimization {
+            self.minim.update(self.vm.jacobian_z(), &mut self.weight)?;
         }
         self.solve()?;
+        if self.method == Method::Compensation {
+            self.compensate(self.reference.sample(s.t).0)?;
+        }
         self.tasks
             .retract(&self.q, &self.qdot, dt, &mut self.q_next)?;
         std::mem::swap(&mut self.q, &mut self.q_next);
@@ -210,10 +218,48 @@ impl WalkController {
         };
         if s.step != self.step {
             self.step = s.step;
-                let (t_step, turn) = self.step_turn;
+            let (t_step, turn) = self.step_turn;
             self.reference.start_step(s.t, t_step, turn)?;
         }
         set_targets(s, &self.com_offset, arms.as_ref(), &mut self.tasks.targets);
+        Ok(())
+    }
+
+    /// Compensation (7.3)-(7.9) solved within the cycle: RMRC is linear in the null-space
+    /// input, so the response `qd_r` to the reducing direction `y_r = J_{L,r,z}^T` (arms
+    /// only, zero task velocity) is computed with the same factorisation, and
+    /// `qd += k s qd_r` with `s = (L_d - J_Lz qd) / (J_Lz qd_r)` sets `L_z` to
+    /// `k L_d + (1 - k) L_z` exactly, including the tasks' reaction to the arm motion (the
+    /// thesis estimates the producing momentum from the previous cycle instead, which at
+    /// 1 kHz with gain 1 oscillates). The arm speed of the term is capped at
+    /// `compensation_max_speed`.
+    fn compensate(&mut self, l_desired: f64) -> Result<(), WalkError> {
+        let jlz = self.vm.jacobian_z();
+        self.dir.fill(0.0);
+        for &i in self.comp.reducing() {
+            self.dir[i] = jlz[i];
+        }
+        self.zero_x.fill(0.0);
+        let p = RmrcProblem {
+            jacobian: &self.buf.jac,
+            rows: self.buf.rows,
+            xdot: &self.zero_x,
+            weight: &self.weight,
+            null_space: Some((&self.dir, 1.0)),
+            damping: 0.0,
+            softness: self.tasks.softness(),
+        };
+        self.rmrc.resolve(&p, &mut self.qdot_r)?;
+        let effect = jlz.dot(&self.qdot_r);
+        if effect.abs() < 1e-12 {
+            return Ok(());
+        }
+        let mut f = self.params.compensation_gain * (l_desired - jlz.dot(&self.qdot)) / effect;
+        let peak = self.qdot_r.amax() * f.abs();
+        if peak > self.params.compensation_max_speed {
+            f *= self.params.compensation_max_speed / peak;
+        }
+        self.qdot.axpy(f, &self.qdot_r, 1.0);
         Ok(())
     }
 
@@ -293,12 +339,15 @@ fn place_on_footprints(
     tasks.set_targets_from(&q)?;
     let (data, _) = tasks.kinematics();
     let sole = |n: &str| {
-        let id = lola.model.body_id(n).ok_or_else(|| model_err(format!("no body {n}")))?;
+        let id = lola
+            .model
+            .body_id(n)
+            .ok_or_else(|| model_err(format!("no body {n}")))?;
         Ok::<_, WalkError>(data.world_pos[id])
     };
     let model_mid = 0.5 * (sole("l_sole")? + sole("r_sole")?);
-    let pattern_mid = 0.5
-        * (first.feet[0].pose.translation.vector + first.feet[1].pose.translation.vector);
+    let pattern_mid =
+        0.5 * (first.feet[0].pose.translation.vector + first.feet[1].pose.translation.vector);
     let shift = pattern_mid - model_mid;
     for k in 0..3 {
         q[k] += shift[k];
@@ -321,8 +370,14 @@ pub fn walk_start_configuration(lola: &LolaModel) -> Result<DVector<f64>, WalkEr
     let stand = standing_configuration(lola);
     for name in LOLA_ARMS {
         let l = lola.limits.iter().find(|l| l.name == name);
-        let i = l.ok_or_else(|| model_err(format!("no joint {name}")))?.q_index;
-        q[i] = if name.ends_with("forearm") { WALK_ELBOW } else { stand[i] };
+        let i = l
+            .ok_or_else(|| model_err(format!("no joint {name}")))?
+            .q_index;
+        q[i] = if name.ends_with("forearm") {
+            WALK_ELBOW
+        } else {
+            stand[i]
+        };
     }
     Ok(q)
 }
@@ -355,7 +410,9 @@ struct ArmPivot {
 
 /// Body index by name.
 fn body(lola: &LolaModel, name: &str) -> Result<usize, WalkError> {
-    lola.model.body_id(name).ok_or_else(|| model_err(format!("no body {name}")))
+    lola.model
+        .body_id(name)
+        .ok_or_else(|| model_err(format!("no body {name}")))
 }
 
 /// [`ArmPivot`]s (right, left) at the configuration of `tasks`' last evaluation.

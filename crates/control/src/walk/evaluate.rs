@@ -60,7 +60,11 @@ impl Evaluator {
             .iter()
             .position(|b| matches!(b.joint(), JointModel::FreeQuaternion))
             .ok_or_else(|| model_err("no quaternion floating base"))?;
-        let id = |n: &str| model.body_id(n).ok_or_else(|| model_err(format!("no body {n}")));
+        let id = |n: &str| {
+            model
+                .body_id(n)
+                .ok_or_else(|| model_err(format!("no body {n}")))
+        };
         Ok(Self {
             data: Data::new(model),
             distances: CollisionAvoidance::new(model, segments, AvoidanceParams::default())?,
@@ -102,7 +106,13 @@ impl Evaluator {
             None => 0.5 * (kin.world_pos[self.soles[0]] + kin.world_pos[self.soles[1]]),
         };
         let model = ctrl.tasks().model();
-        let (_, m) = wrench(model, &mut self.data, self.root, (q, qdot, &self.qdd), &point)?;
+        let (_, m) = wrench(
+            model,
+            &mut self.data,
+            self.root,
+            (q, qdot, &self.qdd),
+            &point,
+        )?;
         let tau_z = m.z;
         self.distances.update(kin)?;
         let min_distance = self

@@ -81,8 +81,10 @@ pub struct WalkParams {
     pub avoidance_gain: f64,
     /// Reference method: scale of the opposite leg's fore-aft motion (7.3.1).
     pub arm_swing_scale: f64,
-    /// Compensation: fraction `k` of the producing momentum the arms cancel per cycle (7.7).
+    /// Compensation: fraction `k` of `L_z - L_d` the arms cancel each cycle (7.7).
     pub compensation_gain: f64,
+    /// Compensation: cap on the arm joint speed of the compensating motion \[rad/s].
+    pub compensation_max_speed: f64,
     /// Minimisation: `delta` of `W = delta E + J_Lz^T J_Lz` (7.13); the null-space steps are
     /// scaled by `delta` with this method so that `W^-1 grad H` keeps its size.
     pub minimization_delta: f64,
@@ -101,9 +103,10 @@ impl Default for WalkParams {
             limit_weight: 0.01,
             limit_margin: 0.1,
             avoidance: true,
-            avoidance_gain: 0.5,
+            avoidance_gain: 10.0,
             arm_swing_scale: 0.2,
-            compensation_gain: 0.5,
+            compensation_gain: 0.9,
+            compensation_max_speed: 30.0,
             minimization_delta: 0.003,
             arm_lock_weight: 1e6,
             settle_time: 0.3,
@@ -137,6 +140,7 @@ impl WalkParams {
             ("limit_weight", self.limit_weight),
             ("limit_margin", self.limit_margin),
             ("compensation_gain", self.compensation_gain),
+            ("compensation_max_speed", self.compensation_max_speed),
             ("avoidance_gain", self.avoidance_gain),
             ("settle_time", self.settle_time),
         ];

@@ -93,7 +93,9 @@ pub fn run_walk(
     let joints = RECORDED_JOINTS.map(|n| lola.limits.iter().find(|l| l.name == n));
     let mut idx = [0; 8];
     for (i, j) in idx.iter_mut().zip(joints) {
-        *i = j.ok_or_else(|| model_err("recorded joint missing"))?.q_index;
+        *i = j
+            .ok_or_else(|| model_err("recorded joint missing"))?
+            .q_index;
     }
     let n = pattern.len();
     let mut s = WalkSeries::default();
