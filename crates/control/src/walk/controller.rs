@@ -15,7 +15,7 @@ use crate::momentum::{
 };
 use crate::pattern::fit::{bent_knee_pose, standing_com_height};
 use crate::pattern::{PatternParams, PatternSample, WalkingPattern};
-use crate::tasks::{lola_joint_cost, standing_configuration, LolaTasks, TaskId};
+use crate::tasks::{lola_joint_cost, LolaTasks, TaskId};
 use biped_dynamics::{Data, Jacobians};
 use biped_robots::lola::{lola_collision_model, LolaModel};
 use nalgebra::{DVector, Vector3};
@@ -82,7 +82,7 @@ impl WalkController {
         let model = &lola.model;
         let nv = model.nv();
         let mut tasks = LolaTasks::new(lola, 0.2)?;
-        let q = place_on_footprints(lola, &mut tasks, first)?;
+        let q = place_on_footprints(lola, &mut tasks, first, params.arm_pose)?;
         tasks.set_targets_from(&q)?;
         let com_offset = tasks.targets.cog - first.com;
         let arm_on = method.arm_tasks();
@@ -334,8 +334,9 @@ fn place_on_footprints(
     lola: &LolaModel,
     tasks: &mut LolaTasks,
     first: &PatternSample,
+    arm_pose: [f64; 3],
 ) -> Result<DVector<f64>, WalkError> {
-    let mut q = walk_start_configuration(lola)?;
+    let mut q = walk_start_configuration(lola, arm_pose)?;
     tasks.set_targets_from(&q)?;
     let (data, _) = tasks.kinematics();
     let sole = |n: &str| {
@@ -363,21 +364,21 @@ pub const WALK_KNEE: f64 = 0.9;
 /// of the 3-D arm CoG task (a hanging straight arm cannot move its CoG vertically).
 pub const WALK_ELBOW: f64 = -0.8;
 
-/// Start posture: the flat-footed bent-knee pose of [`WALK_KNEE`] with the arms of
-/// [`standing_configuration`] and the elbows at [`WALK_ELBOW`].
-pub fn walk_start_configuration(lola: &LolaModel) -> Result<DVector<f64>, WalkError> {
+/// Start posture: the flat-footed bent-knee pose of [`WALK_KNEE`] with the arm joints
+/// `arm_pose = [shoulder flexion, upper-arm abduction (left; mirrored right), elbow]`
+/// (default [`WalkParams::arm_pose`]: `[0, 0.1, WALK_ELBOW]`).
+pub fn walk_start_configuration(
+    lola: &LolaModel,
+    arm_pose: [f64; 3],
+) -> Result<DVector<f64>, WalkError> {
     let mut q = bent_knee_pose(lola, WALK_KNEE)?;
-    let stand = standing_configuration(lola);
-    for name in LOLA_ARMS {
-        let l = lola.limits.iter().find(|l| l.name == name);
+    for (k, name) in LOLA_ARMS.iter().enumerate() {
+        let l = lola.limits.iter().find(|l| l.name == *name);
         let i = l
             .ok_or_else(|| model_err(format!("no joint {name}")))?
             .q_index;
-        q[i] = if name.ends_with("forearm") {
-            WALK_ELBOW
-        } else {
-            stand[i]
-        };
+        let sign = if k == 4 { -1.0 } else { 1.0 };
+        q[i] = sign * arm_pose[k % 3];
     }
     Ok(q)
 }

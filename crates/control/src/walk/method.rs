@@ -90,6 +90,9 @@ pub struct WalkParams {
     pub minimization_delta: f64,
     /// `none`: RMRC weight of the arm joints (others 1) that keeps them still.
     pub arm_lock_weight: f64,
+    /// Start and comfort posture of the arms: shoulder flexion, upper-arm abduction (left
+    /// arm; mirrored for the right), elbow \[rad].
+    pub arm_pose: [f64; 3],
     /// Time the IK runs on the first pattern sample before the walk starts \[s].
     pub settle_time: f64,
 }
@@ -110,6 +113,7 @@ impl Default for WalkParams {
             minimization_delta: 0.003,
             arm_lock_weight: 1e6,
             settle_time: 0.3,
+            arm_pose: [0.0, 0.1, super::controller::WALK_ELBOW],
         }
     }
 }
@@ -149,7 +153,7 @@ impl WalkParams {
                 return bad(name, "must be finite and >= 0");
             }
         }
-        if !self.arm_swing_scale.is_finite() {
+        if !self.arm_swing_scale.is_finite() || self.arm_pose.iter().any(|a| !a.is_finite()) {
             return bad("arm_swing_scale", "must be finite");
         }
         if self.gain * dt >= 2.0 {
