@@ -124,9 +124,9 @@ impl AddAssign for ArticulatedInertia {
     }
 }
 
-/// `A^T S A` for symmetric `S`, computing one triangle.
+/// `A^T S A` for symmetric `S`, computing one triangle (exactly symmetric result).
 #[inline]
-fn sym_congruence(s: &Matrix3<f64>, a: &Matrix3<f64>) -> Matrix3<f64> {
+pub fn sym_congruence(s: &Matrix3<f64>, a: &Matrix3<f64>) -> Matrix3<f64> {
     let t = s * a;
     let e = |i: usize, j: usize| a.column(i).dot(&t.column(j));
     let (m00, m01, m02, m11, m12, m22) = (e(0, 0), e(0, 1), e(0, 2), e(1, 1), e(1, 2), e(2, 2));

@@ -26,7 +26,7 @@ mod motion;
 mod transform;
 mod vector;
 
-pub use articulated::ArticulatedInertia;
+pub use articulated::{sym_congruence, ArticulatedInertia};
 pub use axis::{Axis, JointAxis, SubspaceKind};
 pub use composite::CompositeInertia;
 pub use force::{Force, Wrench};

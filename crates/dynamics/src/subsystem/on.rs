@@ -12,7 +12,9 @@
 
 use super::MAX_SUBSYSTEM_DOF as MAX;
 use crate::kinematics::joint_column;
-use crate::spatial::{skew, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform};
+use crate::spatial::{
+    skew, sym_congruence, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform,
+};
 use crate::{Data, DynamicsError, Model};
 use nalgebra::{DVector, Matrix3};
 
@@ -112,10 +114,19 @@ fn backward_n<const N: usize>(
     let mut fc = Force::zero();
     for (mi, &j) in sub.members.iter().enumerate() {
         let m = &data.mbar[j];
+        // A rigid member's M-hat is its rigid-body inertia: apply it in the compact form (2.22).
+        let (rigid, inertia) = (sub.rigid_member[mi], &model.bodies[j].inertia);
+        let apply = |a: &Motion| {
+            if rigid {
+                inertia.apply(a)
+            } else {
+                m.apply(a)
+            }
+        };
         let (cj, jj) = (&data.cbar[j], &data.jbar[j]);
-        let hat_f = m.apply(&data.bbar[j]) - data.fbar[j];
+        let hat_f = apply(&data.bbar[j]) - data.fbar[j];
         for c in 0..n {
-            let mj = m.apply(&jj[c]);
+            let mj = apply(&jj[c]);
             for r in c..n {
                 ms[r][c] += jj[r].dot(&mj);
             }
@@ -125,8 +136,8 @@ fn backward_n<const N: usize>(
         if sub.parent.is_some() {
             if let Some(k) = &data.rotor_congruence[j] {
                 kc += *k;
-            } else if sub.rigid_member[mi] {
-                add_rigid_congruence(&model.bodies[j].inertia, cj, &mut kc);
+            } else if rigid {
+                add_rigid_congruence(inertia, cj, &mut kc);
             } else {
                 m.add_tr_transform_to(cj, &mut kc);
             }
@@ -170,14 +181,18 @@ pub(crate) fn add_rigid_congruence(
 ) {
     let m = inertia.mass();
     let c = x.rot.tr_mul(&inertia.com()) + x.trans;
-    let ic = x.rot.tr_mul(&(inertia.inertia_about_com() * x.rot));
+    let mut ang = sym_congruence(&inertia.inertia_about_com(), &x.rot);
     let mc = c * m;
-    let mut ang = ic - mc * c.transpose();
     let diag = mc.dot(&c);
-    for k in 0..3 {
-        ang[(k, k)] += diag;
+    for i in 0..3 {
+        ang[(i, i)] += diag - mc[i] * c[i];
+        for k in i + 1..3 {
+            let o = mc[i] * c[k];
+            ang[(i, k)] -= o;
+            ang[(k, i)] -= o;
+        }
     }
-    out.ang += (ang + ang.transpose()) * 0.5;
+    out.ang += ang;
     out.cross += skew(&mc);
     out.lin += Matrix3::from_diagonal_element(m);
 }
