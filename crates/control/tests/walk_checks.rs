@@ -1,0 +1,89 @@
+//! Cross-checks of the walk building blocks: the allocation-free retract against
+//! `biped_dynamics::integrate`, `Rmrc::resolve` against a fresh solve, and the ground wrench
+//! of the evaluator at rest against the weight of the robot.
+
+use biped_control::ik::{Rmrc, RmrcProblem, TaskMap, Weight};
+use biped_control::pattern::WalkingPattern;
+use biped_control::tasks::{standing_configuration, LolaTasks};
+use biped_control::walk::{walk_pattern_params, Evaluator, Method, WalkController, WalkParams};
+use biped_robots::lola::{self, LolaType};
+use nalgebra::{DMatrix, DVector, Vector3};
+use rand::{Rng, SeedableRng};
+
+#[test]
+fn retract_matches_dynamics_integrate() {
+    let lola = lola::build(LolaType::Type2).unwrap();
+    let tasks = LolaTasks::new(&lola, 0.2).unwrap();
+    let mut rng = rand::rngs::StdRng::seed_from_u64(7);
+    let q = standing_configuration(&lola);
+    let mut out = q.clone();
+    for _ in 0..20 {
+        let v = DVector::from_fn(lola.model.nv(), |_, _| rng.random_range(-2.0..2.0));
+        let step = rng.random_range(-0.1..0.1);
+        tasks.retract(&q, &v, step, &mut out).unwrap();
+        let reference = biped_dynamics::integrate(&lola.model, &q, &v, step).unwrap();
+        assert!((&out - &reference).amax() < 1e-12);
+    }
+}
+
+#[test]
+fn resolve_equals_fresh_solve_and_superposes() {
+    let (m, n) = (25, 31);
+    let mut rng = rand::rngs::StdRng::seed_from_u64(3);
+    let mut r = || rng.random_range(-1.0..1.0);
+    let j = DMatrix::from_fn(m, n, |_, _| r());
+    let (x1, x2) = (
+        DVector::from_fn(m, |_, _| r()),
+        DVector::from_fn(m, |_, _| r()),
+    );
+    let g = DVector::from_fn(n, |_, _| r());
+    let w = Weight::Diagonal(DVector::from_fn(n, |_, _| 1.5 + r()));
+    let mut solver = Rmrc::new(m, n);
+    let (mut a, mut b, mut c) = (DVector::zeros(n), DVector::zeros(n), DVector::zeros(n));
+    let p1 = RmrcProblem::new(&j, m, &x1, &w);
+    solver.solve(&p1, &mut a).unwrap();
+    let p2 = RmrcProblem {
+        null_space: Some((&g, 0.5)),
+        ..RmrcProblem::new(&j, m, &x2, &w)
+    };
+    solver.resolve(&p2, &mut b).unwrap();
+    Rmrc::new(m, n).solve(&p2, &mut c).unwrap();
+    assert!((&b - &c).amax() < 1e-10);
+    // superposition: response to (x1 + x2, g) = response to (x1, 0) + response to (x2, g)
+    let sum = &x1 + &x2;
+    let p3 = RmrcProblem {
+        null_space: Some((&g, 0.5)),
+        ..RmrcProblem::new(&j, m, &sum, &w)
+    };
+    Rmrc::new(m, n).solve(&p3, &mut c).unwrap();
+    assert!((&a + &b - &c).amax() < 1e-10);
+}
+
+#[test]
+fn ground_wrench_at_rest_carries_the_weight() {
+    let lola = lola::build(LolaType::Type2).unwrap();
+    let pattern =
+        WalkingPattern::generate(&walk_pattern_params(&lola, 1, 0.2, 0.8).unwrap()).unwrap();
+    let ctrl = WalkController::new(&lola, Method::None, WalkParams::default(), &pattern).unwrap();
+    assert_eq!(ctrl.qdot().amax(), 0.0);
+    let mut eval = Evaluator::new(&lola, 1e-3).unwrap();
+    let com = ctrl.tasks().centroidal().com();
+    let mass = ctrl.tasks().centroidal().mass();
+    let g = lola.model.gravity();
+    let a = DVector::zeros(lola.model.nv());
+    let point = Vector3::new(com.x, com.y, 0.0);
+    let (f, m) = eval.ground_wrench(&ctrl, &a, &point).unwrap();
+    assert!(
+        (f + g * mass).norm() < 1e-6 * mass,
+        "f = {f}, m g = {}",
+        g * mass
+    );
+    assert!(
+        m.norm() < 1e-6 * mass,
+        "moment about the CoM ground point {m}"
+    );
+    // about another point the moment is r x f (statics)
+    let other = point + Vector3::new(0.1, -0.05, 0.0);
+    let (_, m2) = eval.ground_wrench(&ctrl, &a, &other).unwrap();
+    assert!((m2 - (point - other).cross(&f)).norm() < 1e-6 * mass);
+}
