@@ -5,8 +5,8 @@ use crate::mechanism::knee::KneeLoopCache;
 use crate::mechanism::MechanismError;
 use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
-use crate::model::JointModel;
-use crate::spatial::{ArticulatedInertia, Force, Motion, SpatialTransform};
+use crate::model::{Body, JointModel};
+use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, SpatialTransform};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
 use crate::Model;
 use nalgebra::{
@@ -80,6 +80,9 @@ pub struct Data {
     pub(crate) rotor_frame: Vec<SpatialTransform>,
     /// Spin-invariant `C^T M C` of axisymmetric rotor members (2.76), per body (else `None`).
     pub(crate) rotor_congruence: Vec<Option<ArticulatedInertia>>,
+    /// Coordinate axis (0, 1, 2) of a revolute joint whose placement is a pure translation, so
+    /// that `C_i` rotates about that axis ([`ArticulatedInertia::tr_transform_axis`]), per body.
+    pub(crate) plane_axis: Vec<Option<usize>>,
     /// Last closed ankle slider-crank loop, reused by the actuator's other parts.
     pub(crate) ankle_loop: Option<AnkleLoop>,
     /// Last closed knee loop, reused by the drive's other parts.
@@ -96,6 +99,21 @@ pub struct Data {
     pub nle: DVector<f64>,
     /// Factorisation workspace (dense Cholesky or sparse LTL).
     pub(crate) factor: DMatrix<f64>,
+}
+
+/// The coordinate axis of a revolute (or rotor) joint with an unrotated placement.
+fn plane_axis(body: &Body) -> Option<usize> {
+    match &body.joint {
+        Joint::Revolute(ax) | Joint::Rotor(ax) if body.placement_x.rot == Matrix3::identity() => {
+            match ax.axis {
+                Axis::X => Some(0),
+                Axis::Y => Some(1),
+                Axis::Z => Some(2),
+                Axis::General(_) => None,
+            }
+        }
+        _ => None,
+    }
 }
 
 impl Data {
@@ -156,6 +174,7 @@ impl Data {
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
             rotor_congruence: crate::subsystem::rotor::constant_congruences(model, &rotor_frames),
             rotor_frame: rotor_frames,
+            plane_axis: model.bodies.iter().map(plane_axis).collect(),
             ankle_loop: None,
             knee_loop: None,
             mechanism_fault: None,

@@ -109,7 +109,10 @@ fn body_backward(
     if let Some(p) = body.parent {
         let x = &data.x[i];
         let (head, tail) = data.mbar.split_at_mut(i);
-        tail[0].add_tr_transform_to(x, &mut head[p]);
+        match data.plane_axis[i] {
+            Some(k) => head[p] += tail[0].tr_transform_axis(k, x),
+            None => tail[0].add_tr_transform_to(x, &mut head[p]),
+        }
         data.fbar[p] -= x.tr_apply_force(&k);
     }
     Ok(())

@@ -62,15 +62,18 @@ impl ArticulatedInertia {
         let ang = sym_congruence(&self.ang, a);
         let lin = sym_congruence(&self.lin, a);
         let cross = a.tr_mul(&(self.cross * a));
-        let r = &x.trans;
-        let dr = mul_skew(&lin, r);
-        let br = mul_skew(&cross, r);
-        let rdr = skew_mul(r, &dr);
-        ArticulatedInertia {
-            ang: symmetrize(&(ang - br - br.transpose() - rdr)),
-            cross: cross - dr.transpose(),
-            lin,
-        }
+        shift(&ang, &cross, lin, &x.trans)
+    }
+
+    /// [`Self::tr_transform`] when `x.rot` is a rotation about coordinate axis `k` (0, 1, 2):
+    /// a revolute joint about a body axis whose placement is a pure translation. Each block
+    /// rotates in the plane normal to the axis (24 instead of 45-54 multiplications).
+    pub(crate) fn tr_transform_axis(&self, k: usize, x: &SpatialTransform) -> ArticulatedInertia {
+        let a = &x.rot;
+        let ang = axis_congruence(&self.ang, a, k);
+        let lin = mirror_upper(&axis_congruence(&self.lin, a, k));
+        let cross = axis_congruence(&self.cross, a, k);
+        shift(&ang, &cross, lin, &x.trans)
     }
 
     /// `out += C^T I C` without a temporary inertia (the backward-pass accumulation (2.69)).
@@ -122,6 +125,62 @@ impl AddAssign for ArticulatedInertia {
         self.cross += o.cross;
         self.lin += o.lin;
     }
+}
+
+/// Shift of rotated blocks by `r` (parent coordinates), the `[E 0; -r~ E]` factor of `C`:
+/// `cross' = B - (D r~)^T`, `ang' = A - B r~ - (B r~)^T - r~ D r~` (symmetrized).
+#[inline]
+fn shift(
+    ang: &Matrix3<f64>,
+    cross: &Matrix3<f64>,
+    lin: Matrix3<f64>,
+    r: &Vector3<f64>,
+) -> ArticulatedInertia {
+    let dr = mul_skew(&lin, r);
+    let br = mul_skew(cross, r);
+    let rdr = skew_mul(r, &dr);
+    ArticulatedInertia {
+        ang: symmetrize(&(ang - br - br.transpose() - rdr)),
+        cross: cross - dr.transpose(),
+        lin,
+    }
+}
+
+/// `A^T M A` for a rotation `A` about coordinate axis `k` (`A e_k = e_k`): only the plane
+/// `(p, q)` normal to the axis mixes, `T = M A` then `A^T T`, 12 multiplications each.
+#[inline]
+fn axis_congruence(m: &Matrix3<f64>, a: &Matrix3<f64>, k: usize) -> Matrix3<f64> {
+    let (p, q) = ((k + 1) % 3, (k + 2) % 3);
+    let (app, apq, aqp, aqq) = (a[(p, p)], a[(p, q)], a[(q, p)], a[(q, q)]);
+    let mut t = *m;
+    for r in 0..3 {
+        let (mp, mq) = (m[(r, p)], m[(r, q)]);
+        t[(r, p)] = mp * app + mq * aqp;
+        t[(r, q)] = mp * apq + mq * aqq;
+    }
+    let mut out = t;
+    for c in 0..3 {
+        let (tp, tq) = (t[(p, c)], t[(q, c)]);
+        out[(p, c)] = app * tp + aqp * tq;
+        out[(q, c)] = apq * tp + aqq * tq;
+    }
+    out
+}
+
+/// The symmetric matrix with `m`'s upper triangle.
+#[inline]
+fn mirror_upper(m: &Matrix3<f64>) -> Matrix3<f64> {
+    Matrix3::new(
+        m[(0, 0)],
+        m[(0, 1)],
+        m[(0, 2)],
+        m[(0, 1)],
+        m[(1, 1)],
+        m[(1, 2)],
+        m[(0, 2)],
+        m[(1, 2)],
+        m[(2, 2)],
+    )
 }
 
 /// `A^T S A` for symmetric `S`, computing one triangle (exactly symmetric result).
@@ -199,6 +258,18 @@ mod tests {
             let got = art.tr_transform(&x).to_matrix();
             assert!((got - expect).amax() < 1e-12 * expect.amax());
             assert_eq!(got, got.transpose());
+        }
+        // Rotations about each coordinate axis (with a translation): the plane fast path.
+        for (k, axis) in [Vector3::x_axis(), Vector3::y_axis(), Vector3::z_axis()]
+            .iter()
+            .enumerate()
+        {
+            let rot = nalgebra::Rotation3::from_axis_angle(axis, 0.7 - k as f64);
+            let x = SpatialTransform::new(*rot.matrix(), Vector3::new(0.2, -0.5, 0.3));
+            let general = art.tr_transform(&x).to_matrix();
+            let fast = art.tr_transform_axis(k, &x).to_matrix();
+            assert!((fast - general).amax() < 1e-13 * general.amax());
+            assert_eq!(fast, fast.transpose());
         }
     }
 }

@@ -138,6 +138,11 @@ fn backward_n<const N: usize>(
                 kc += *k;
             } else if rigid {
                 add_rigid_congruence(inertia, cj, &mut kc);
+            } else if let (Some(k), true) =
+                (data.plane_axis[j], model.bodies[j].parent == sub.parent)
+            {
+                // C-hat_j = C_j for a member on the sub-system's parent.
+                kc += m.tr_transform_axis(k, cj);
             } else {
                 m.add_tr_transform_to(cj, &mut kc);
             }
