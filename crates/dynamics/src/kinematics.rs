@@ -335,9 +335,10 @@ pub(crate) fn body_kinematics(
             data.world_pos[i] = data.world_pos[p] + data.world_rot[p] * x.trans;
             data.gravity_body[i] = x.rot * data.gravity_body[p];
             if v.is_some() {
-                let vp = x.apply_motion(&data.vel[p]);
-                let w = vp.ang;
+                // C v_p = [A w_p; A v_p + (A w_p) x (A r)] shares `A r` with the bias (2.37).
+                let w = x.rot * data.vel[p].ang;
                 let rk = x.rot * x.trans;
+                let vp = Motion::new(w, x.rot * data.vel[p].lin + w.cross(&rk));
                 data.vel[i] = vp + rel;
                 data.bias_acc[i] = Motion::new(
                     w.cross(&rel.ang) + cj.ang,
