@@ -107,6 +107,12 @@ impl<const N: usize> SJet<N> {
         self.chain(c, -s, -c)
     }
 
+    /// `(sin(self), cos(self))` from one evaluation of the sine and cosine.
+    pub fn sin_cos(self) -> (Self, Self) {
+        let (s, c) = self.v.sin_cos();
+        (self.chain(s, c, -s), self.chain(c, -s, -c))
+    }
+
     /// `acos(self)` (caller guarantees `|self.v| < 1`).
     pub fn acos(self) -> Self {
         let x = self.v;
@@ -323,7 +329,7 @@ impl<const N: usize> FrameJet<N> {
 
     /// This frame rotated about its own z axis by the scalar-jet angle `phi` (a spinning rotor).
     pub fn spin_z(&self, phi: SJet<N>) -> Self {
-        let (c, s) = (phi.cos(), phi.sin());
+        let (s, c) = phi.sin_cos();
         let x = self.x.scale(c).add(self.y.scale(s));
         let y = self.y.scale(c).sub(self.x.scale(s));
         Self {
@@ -427,6 +433,7 @@ mod tests {
             let axis = Unit::new_normalize(k);
             let qj = seed_inputs::<2>("test", &q, &qd).expect("finite");
             let angle = qj[0] * qj[1].sin();
+            prop_assert_eq!(angle.sin_cos(), (angle.sin(), angle.cos()));
             let c = Vector3::from(c);
             let fast = VJet::rotate_constant(&c, &axis, angle);
             let slow = VJet::constant(c).rotate(&axis, angle);
