@@ -70,6 +70,8 @@ pub struct Rmrc {
     wjt: DMatrix<f64>,
     z: DVector<f64>,
     lambda: DVector<f64>,
+    /// `D^-1` and `D^-1 u` of the weight (2n).
+    scratch: DVector<f64>,
     /// Rows of the factorisation held in `b` (None before the first successful solve).
     factored: Option<usize>,
 }
@@ -85,6 +87,7 @@ impl Rmrc {
             wjt: DMatrix::zeros(n, m_max),
             z: DVector::zeros(n),
             lambda: DVector::zeros(m_max),
+            scratch: DVector::zeros(2 * n),
             factored: None,
         }
     }
@@ -190,9 +193,8 @@ impl Rmrc {
             }
         }
         let (jt, wjt) = (self.jt.as_slice(), self.wjt.as_mut_slice());
-        for i in 0..m {
-            w.apply_inverse(&jt[i * n..(i + 1) * n], &mut wjt[i * n..(i + 1) * n]);
-        }
+        let scratch = self.scratch.as_mut_slice();
+        w.apply_inverse_columns(n, &jt[..m * n], &mut wjt[..m * n], scratch);
         for k in 0..m {
             let wk = &self.wjt.as_slice()[k * n..(k + 1) * n];
             for i in k..m {
@@ -252,5 +254,13 @@ impl Rmrc {
 /// Dot product of two equally long slices.
 #[inline]
 fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
+    // four independent accumulators: the single-chain sum is latency bound
+    let (mut acc, n4) = ([0.0; 4], a.len().min(b.len()) / 4 * 4);
+    for (x, y) in a[..n4].chunks_exact(4).zip(b[..n4].chunks_exact(4)) {
+        for k in 0..4 {
+            acc[k] += x[k] * y[k];
+        }
+    }
+    let tail: f64 = a[n4..].iter().zip(&b[n4..]).map(|(x, y)| x * y).sum();
+    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
 }

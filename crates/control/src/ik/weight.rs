@@ -137,6 +137,52 @@ impl Weight {
         }
     }
 
+    /// `out_k = W^-1 x_k` for the consecutive length-`n` columns `x_k` of `x` (same as
+    /// [`Self::apply_inverse`] per column, but `D^-1`, `D^-1 u` and `1 + u^T D^-1 u` are
+    /// computed once into `scratch` (length >= 2n) instead of per column; no validation).
+    pub(crate) fn apply_inverse_columns(
+        &self,
+        n: usize,
+        x: &[f64],
+        out: &mut [f64],
+        scratch: &mut [f64],
+    ) {
+        let (dinv, du) = scratch[..2 * n].split_at_mut(n);
+        let c = match self {
+            Weight::Identity => {
+                out.copy_from_slice(x);
+                return;
+            }
+            Weight::Diagonal(d) => {
+                for (o, di) in dinv.iter_mut().zip(d.iter()) {
+                    *o = 1.0 / di;
+                }
+                0.0
+            }
+            Weight::DiagonalRankOne { diag, u } => {
+                let mut c = 1.0;
+                for i in 0..n {
+                    dinv[i] = 1.0 / diag[i];
+                    du[i] = u[i] * dinv[i];
+                    c += u[i] * du[i];
+                }
+                c
+            }
+        };
+        for (xk, ok) in x.chunks_exact(n).zip(out.chunks_exact_mut(n)) {
+            for ((o, xi), di) in ok.iter_mut().zip(xk).zip(dinv.iter()) {
+                *o = xi * di;
+            }
+            if let Weight::DiagonalRankOne { u, .. } = self {
+                // (7.14): subtract (D^-1 u)(u^T D^-1 x) / (1 + u^T D^-1 u)
+                let f = u.iter().zip(ok.iter()).map(|(a, b)| a * b).sum::<f64>() / c;
+                for (o, d) in ok.iter_mut().zip(du.iter()) {
+                    *o -= f * d;
+                }
+            }
+        }
+    }
+
     /// Dense W (tests and diagnostics only).
     pub fn to_dense(&self, n: usize) -> DMatrix<f64> {
         match self {
