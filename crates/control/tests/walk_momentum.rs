@@ -1,6 +1,6 @@
 //! Issue 6 point 9 on a 4-step walk: compensation lowers the peaks of |L_z| and |dL_z/dt| by
-//! >= 20 % against the reference arm method; minimisation lowers peak |L_z| by >= 30 %
-//! against arms held still. Parameters are the defaults of `WalkParams` (no per-test tuning).
+//! at least 20 % against the reference arm method; minimisation lowers peak |L_z| by at
+//! least 30 % against arms held still. Parameters are the defaults of `WalkParams` (no per-test tuning).
 
 use biped_control::pattern::WalkingPattern;
 use biped_control::walk::{run_walk, walk_pattern_params, Method, WalkParams, WalkSummary};
