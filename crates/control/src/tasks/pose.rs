@@ -23,7 +23,7 @@ const STANDING: [(&str, f64); 12] = [
     ("r_shoulder", 0.0),
 ];
 
-/// Standing configuration: base at the origin, upright, joints of [`STANDING`]; a joint
+/// Standing configuration: base at the origin, upright, joints of `STANDING`; a joint
 /// without a listed value sits at the middle of its range clamped to 0 where 0 is inside.
 pub fn standing_configuration(lola: &LolaModel) -> DVector<f64> {
     let mut q = lola.model.neutral();
