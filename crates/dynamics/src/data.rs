@@ -7,6 +7,7 @@ use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::model::{Body, JointModel};
 use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, SpatialTransform};
+use crate::subsystem::rotor::RotorConstant;
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
 use crate::Model;
 use nalgebra::{
@@ -78,8 +79,8 @@ pub struct Data {
     pub(crate) sub_p: Vec<[f64; MAX_SUBSYSTEM_DOF]>,
     /// Constant frames of Harmonic Drive rotors (placement times initial rotor pose), per body.
     pub(crate) rotor_frame: Vec<SpatialTransform>,
-    /// Spin-invariant `C^T M C` of axisymmetric rotor members (2.76), per body (else `None`).
-    pub(crate) rotor_congruence: Vec<Option<ArticulatedInertia>>,
+    /// Spin-invariant `C^T M C`, `B_S` row and `M_S` entry of axisymmetric rotor members (2.76).
+    pub(crate) rotor_constant: Vec<Option<RotorConstant>>,
     /// Coordinate axis (0, 1, 2) of a revolute joint whose placement is a pure translation, so
     /// that `C_i` rotates about that axis ([`ArticulatedInertia::tr_transform_axis`]), per body.
     pub(crate) plane_axis: Vec<Option<usize>>,
@@ -172,7 +173,7 @@ impl Data {
             sub_l: vec![[[0.0; MAX_SUBSYSTEM_DOF]; MAX_SUBSYSTEM_DOF]; ns],
             sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
-            rotor_congruence: crate::subsystem::rotor::constant_congruences(model, &rotor_frames),
+            rotor_constant: crate::subsystem::rotor::constant_congruences(model, &rotor_frames),
             rotor_frame: rotor_frames,
             plane_axis: model.bodies.iter().map(plane_axis).collect(),
             ankle_loop: None,

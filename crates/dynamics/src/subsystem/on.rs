@@ -125,6 +125,16 @@ fn backward_n<const N: usize>(
         };
         let (cj, jj) = (&data.cbar[j], &data.jbar[j]);
         let hat_f = apply(&data.bbar[j]) - data.fbar[j];
+        if let Some(rc) = &data.rotor_constant[j] {
+            // Spin-invariant rotor: constant B_S row and M_S diagonal entry, one column only.
+            let c = rc.column;
+            ms[c][c] += rc.sks;
+            bs[c] += rc.ks;
+            rhs[c] -= jj[c].dot(&hat_f);
+            kc += rc.congruence;
+            fc += cj.tr_apply_force(&hat_f);
+            continue;
+        }
         for c in 0..n {
             let mj = apply(&jj[c]);
             for r in c..n {
@@ -134,9 +144,7 @@ fn backward_n<const N: usize>(
             rhs[c] -= jj[c].dot(&hat_f);
         }
         if sub.parent.is_some() {
-            if let Some(k) = &data.rotor_congruence[j] {
-                kc += *k;
-            } else if rigid {
+            if rigid {
                 add_rigid_congruence(inertia, cj, &mut kc);
             } else if let (Some(k), true) =
                 (data.plane_axis[j], model.bodies[j].parent == sub.parent)

@@ -3,38 +3,73 @@
 //! A rotor (3.1)-(3.2) attached directly to its sub-system's parent has `C-hat = C`, a rotation
 //! by the spin angle about the z axis of a constant frame. When the rotor's inertia is
 //! axisymmetric about that axis (CoM on the axis, `I_xx = I_yy`, no products of inertia), its
-//! term `C^T M C` of (2.76) does not depend on the spin angle and is computed once per model.
+//! term `K = C^T M C` of (2.76) does not depend on the spin angle and is computed once per model.
+//! So are its contributions to `B_S` and `M_S`: with the rotor column `J = [0, 0, N, 0, 0, 0]`
+//! (3.1) and its parent-frame image `s = C^-1 J` (the spin axis, constant), `C^T M J = K s` and
+//! `J^T M J = s^T K s`.
 
 use super::on::add_rigid_congruence;
 use crate::mechanism::harmonic_drive::HarmonicDriveRotor;
 use crate::model::coupling::Mechanism;
 use crate::model::JointModel;
-use crate::spatial::{ArticulatedInertia, RigidInertia, SpatialTransform};
+use crate::spatial::{ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform};
 use crate::Model;
+use nalgebra::Vector3;
 
-/// Per body: the constant `C^T M C` of a spin-invariant rotor member (see the module doc),
-/// `None` for every other body. `frames` are the rotors' constant frames (spin angle zero).
+/// Spin-invariant quantities of one rotor member of a sub-system (see the module doc).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RotorConstant {
+    /// `K = C^T M C` in the sub-system parent's frame.
+    pub(crate) congruence: ArticulatedInertia,
+    /// Column of the rotor's coordinate within the sub-system.
+    pub(crate) column: usize,
+    /// `C^T M J = K s`, the rotor's contribution to its row of `B_S`.
+    pub(crate) ks: Force,
+    /// `J^T M J = s^T K s`, the rotor's contribution to the diagonal of `M_S`.
+    pub(crate) sks: f64,
+}
+
+/// Per body: the constants of a spin-invariant rotor member (see the module doc), `None` for
+/// every other body. `frames` are the rotors' constant frames (spin angle zero).
 pub(crate) fn constant_congruences(
     model: &Model,
     frames: &[SpatialTransform],
-) -> Vec<Option<ArticulatedInertia>> {
+) -> Vec<Option<RotorConstant>> {
     let mut out = vec![None; model.nbodies()];
     for sub in &model.subsystems {
         for (mi, &j) in sub.members.iter().enumerate() {
             let body = &model.bodies[j];
-            let is_rotor = matches!(
-                &body.joint_model,
-                JointModel::Coupled {
-                    mechanism: Mechanism::HarmonicDrive(HarmonicDriveRotor { .. }),
-                    ..
-                }
-            );
-            if is_rotor && sub.rigid_member[mi] && body.parent == sub.parent {
-                out[j] = spin_invariant(&body.inertia, &frames[j]);
+            let JointModel::Coupled {
+                mechanism: Mechanism::HarmonicDrive(rotor),
+                ..
+            } = &body.joint_model
+            else {
+                continue;
+            };
+            if !(sub.rigid_member[mi] && body.parent == sub.parent && body.v_set.len() == 1) {
+                continue;
             }
+            out[j] = spin_invariant(&body.inertia, &frames[j]).map(|congruence| {
+                let s = frames[j].inv_apply_motion(&rotor_column(rotor));
+                let ks = congruence.apply(&s);
+                RotorConstant {
+                    congruence,
+                    column: sub.columns[mi][0],
+                    ks,
+                    sks: s.dot(&ks),
+                }
+            });
         }
     }
     out
+}
+
+/// The rotor's Jacobian column `[0, 0, N, 0, 0, 0]` (3.1) in its own frame.
+pub(crate) fn rotor_column(rotor: &HarmonicDriveRotor) -> Motion {
+    Motion::new(
+        Vector3::new(0.0, 0.0, rotor.params().ratio),
+        Vector3::zeros(),
+    )
 }
 
 /// `C^T M C` at spin angle zero if `M` is axisymmetric about the body z axis (to rounding).
@@ -77,6 +112,17 @@ mod tests {
             let dense = x.to_matrix().transpose() * rotor.to_matrix() * x.to_matrix();
             assert!((k.to_matrix() - dense).amax() < 1e-14);
         }
+        // The constant B_S / M_S contributions against the dense C^T M J and J^T M J.
+        let j = Motion::new(Vector3::new(0.0, 0.0, -80.0), Vector3::zeros());
+        let sp = frame.inv_apply_motion(&j);
+        let ks = k.apply(&sp).to_vector();
+        let (s, c) = f64::sin_cos(2.3);
+        let x = SpatialTransform::new(Axis::Z.rot_tr_mul(s, c, &frame.rot), frame.trans);
+        let (m, jv) = (rotor.to_matrix(), j.to_vector());
+        let dense = x.to_matrix().transpose() * m * jv;
+        assert!((ks - dense).amax() < 1e-12 * dense.amax());
+        let jmj = (jv.transpose() * m * jv)[0];
+        assert!((sp.to_vector().dot(&ks) - jmj).abs() < 1e-12 * jmj);
         let off_axis = RigidInertia::new(0.15, Vector3::new(1e-3, 0.0, 0.0), ic).expect("valid");
         assert!(spin_invariant(&off_axis, &frame).is_none());
         let flat = Matrix3::from_diagonal(&Vector3::new(2e-5, 2.1e-5, 3e-5));
