@@ -81,6 +81,9 @@ pub struct Data {
     pub(crate) rotor_frame: Vec<SpatialTransform>,
     /// Spin-invariant `C^T M C`, `B_S` row and `M_S` entry of axisymmetric rotor members (2.76).
     pub(crate) rotor_constant: Vec<Option<RotorConstant>>,
+    /// Per body: whether the O(n) passes read `mbar` (false for rigid sub-system members, whose
+    /// `M-hat` is applied from the rigid-body inertia directly).
+    pub(crate) mbar_needed: Vec<bool>,
     /// Coordinate axis (0, 1, 2) of a revolute joint whose placement is a pure translation, so
     /// that `C_i` rotates about that axis ([`ArticulatedInertia::tr_transform_axis`]), per body.
     pub(crate) plane_axis: Vec<Option<usize>>,
@@ -100,6 +103,17 @@ pub struct Data {
     pub nle: DVector<f64>,
     /// Factorisation workspace (dense Cholesky or sparse LTL).
     pub(crate) factor: DMatrix<f64>,
+}
+
+/// Per body: false for rigid sub-system members (see [`Data::mbar_needed`]).
+fn mbar_needed(model: &Model) -> Vec<bool> {
+    let mut needed = vec![true; model.nbodies()];
+    for sub in &model.subsystems {
+        for (&j, &rigid) in sub.members.iter().zip(&sub.rigid_member) {
+            needed[j] = !rigid;
+        }
+    }
+    needed
 }
 
 /// The coordinate axis of a revolute (or rotor) joint with an unrotated placement.
@@ -176,6 +190,7 @@ impl Data {
             rotor_constant: crate::subsystem::rotor::constant_congruences(model, &rotor_frames),
             rotor_frame: rotor_frames,
             plane_axis: model.bodies.iter().map(plane_axis).collect(),
+            mbar_needed: mbar_needed(model),
             ankle_loop: None,
             knee_loop: None,
             mechanism_fault: None,

@@ -37,7 +37,9 @@ pub fn forward_pass_1(
     first_forward(model, data, q, v, fext);
     take_fault(data)?;
     for (i, body) in model.bodies.iter().enumerate() {
-        data.mbar[i] = body.inertia.to_articulated();
+        if data.mbar_needed[i] {
+            data.mbar[i] = body.inertia.to_articulated();
+        }
         data.fbar[i] = data.force[i];
     }
     for s in 0..model.subsystems.len() {
