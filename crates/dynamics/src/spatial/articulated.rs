@@ -69,10 +69,20 @@ impl ArticulatedInertia {
     /// a revolute joint about a body axis whose placement is a pure translation. Each block
     /// rotates in the plane normal to the axis (24 instead of 45-54 multiplications).
     pub(crate) fn tr_transform_axis(&self, k: usize, x: &SpatialTransform) -> ArticulatedInertia {
+        match k {
+            0 => self.tr_transform_plane::<0>(x),
+            1 => self.tr_transform_plane::<1>(x),
+            _ => self.tr_transform_plane::<2>(x),
+        }
+    }
+
+    /// [`Self::tr_transform_axis`] for the axis `K` known at compile time (constant indices).
+    #[inline]
+    fn tr_transform_plane<const K: usize>(&self, x: &SpatialTransform) -> ArticulatedInertia {
         let a = &x.rot;
-        let ang = axis_congruence(&self.ang, a, k);
-        let lin = mirror_upper(&axis_congruence(&self.lin, a, k));
-        let cross = axis_congruence(&self.cross, a, k);
+        let ang = axis_congruence::<K>(&self.ang, a);
+        let lin = mirror_upper(&axis_congruence::<K>(&self.lin, a));
+        let cross = axis_congruence::<K>(&self.cross, a);
         shift(&ang, &cross, lin, &x.trans)
     }
 
@@ -146,11 +156,11 @@ fn shift(
     }
 }
 
-/// `A^T M A` for a rotation `A` about coordinate axis `k` (`A e_k = e_k`): only the plane
+/// `A^T M A` for a rotation `A` about coordinate axis `K` (`A e_K = e_K`): only the plane
 /// `(p, q)` normal to the axis mixes, `T = M A` then `A^T T`, 12 multiplications each.
 #[inline]
-fn axis_congruence(m: &Matrix3<f64>, a: &Matrix3<f64>, k: usize) -> Matrix3<f64> {
-    let (p, q) = ((k + 1) % 3, (k + 2) % 3);
+fn axis_congruence<const K: usize>(m: &Matrix3<f64>, a: &Matrix3<f64>) -> Matrix3<f64> {
+    let (p, q) = ((K + 1) % 3, (K + 2) % 3);
     let (app, apq, aqp, aqq) = (a[(p, p)], a[(p, q)], a[(q, p)], a[(q, q)]);
     let mut t = *m;
     for r in 0..3 {
