@@ -1,7 +1,7 @@
 //! Rigid (composite) inertia in world axes about the world origin, kept as mass, first moment
 //! and rotational inertia: the form of (2.21)-(2.22) that sums of rigid bodies keep.
 
-use super::{skew, ArticulatedInertia, Force, Motion, RigidInertia};
+use super::{skew, sym_congruence, ArticulatedInertia, Force, Motion, RigidInertia};
 use nalgebra::{Matrix3, Vector3};
 use std::ops::AddAssign;
 
@@ -25,8 +25,9 @@ impl CompositeInertia {
         let m = inertia.mass();
         let c = rot * inertia.com() + pos;
         let h = c * m;
-        let t = rot * inertia.inertia_about_com();
-        let e = |i: usize, j: usize| t.row(i).dot(&rot.row(j));
+        // R I_C R^T = (R^T)^T I_C R^T: one triangle, contiguous column products.
+        let ic = sym_congruence(&inertia.inertia_about_com(), &rot.transpose());
+        let e = |i: usize, j: usize| ic[(i, j)];
         let hc = |i: usize, j: usize| h[i] * c[j];
         let d = h.dot(&c);
         let (a01, a02, a12) = (e(0, 1) - hc(0, 1), e(0, 2) - hc(0, 2), e(1, 2) - hc(1, 2));
