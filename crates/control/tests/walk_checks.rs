@@ -87,3 +87,35 @@ fn ground_wrench_at_rest_carries_the_weight() {
     let (_, m2) = eval.ground_wrench(&ctrl, &a, &other).unwrap();
     assert!((m2 - (point - other).cross(&f)).norm() < 1e-6 * mass);
 }
+
+#[test]
+fn rmrc_25x31_rank_one_matches_dense_formula() {
+    let (m, n) = (25, 31);
+    let mut rng = rand::rngs::StdRng::seed_from_u64(11);
+    let mut r = || rng.random_range(-1.0..1.0);
+    let j = DMatrix::from_fn(m, n, |_, _| r());
+    let xd = DVector::from_fn(m, |_, _| r());
+    let g = DVector::from_fn(n, |_, _| r());
+    let u: Vec<f64> = (0..n).map(|_| r()).collect();
+    let mut w = Weight::rank_one(n, 0.003).unwrap();
+    w.set_rank_one(0.003, &u).unwrap();
+    let p = RmrcProblem {
+        null_space: Some((&g, 0.7)),
+        ..RmrcProblem::new(&j, m, &xd, &w)
+    };
+    let mut qd = DVector::zeros(n);
+    Rmrc::new(m, n).solve(&p, &mut qd).unwrap();
+    // dense (4.12): z = -alpha W^-1 g, qd = W^-1 J^T (J W^-1 J^T)^-1 (xd - J z) + z
+    let winv = w.to_dense(n).try_inverse().unwrap();
+    let z = -0.7 * &winv * &g;
+    let b = &j * &winv * j.transpose();
+    let lambda = b.lu().solve(&(&xd - &j * &z)).unwrap();
+    let dense = &winv * j.transpose() * lambda + z;
+    let scale = dense.amax().max(1.0);
+    assert!(
+        (&qd - &dense).amax() < 1e-8 * scale,
+        "{}",
+        (&qd - &dense).amax()
+    );
+    assert!((&j * &qd - &xd).amax() < 1e-8 * scale);
+}

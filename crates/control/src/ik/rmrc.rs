@@ -13,7 +13,7 @@
 //! `1/2 qd^T W qd + sum_i (xd_i - J_i qd)^2 / (2 c_i)`. As `c_i -> infinity` row `i` drops out
 //! continuously; this is how tasks are blended in and out (see [`crate::ik::blend`]).
 
-use super::linalg::{check_dim, check_finite, cholesky_in_place, cholesky_solve_in_place};
+use super::linalg::{check_dim, check_finite};
 use super::weight::Weight;
 use crate::error::IkError;
 use nalgebra::{DMatrix, DVector};
@@ -62,7 +62,7 @@ impl<'a> RmrcProblem<'a> {
 pub struct Rmrc {
     m_max: usize,
     n: usize,
-    /// `B = J W^-1 J^T (+ damping)`, then its Cholesky factor (lower triangle).
+    /// `B = J W^-1 J^T (+ damping)` (upper triangle), then `L^T` of its Cholesky factor.
     b: DMatrix<f64>,
     /// `J^T` (n x m_max): row i of J is a contiguous column.
     jt: DMatrix<f64>,
@@ -70,6 +70,8 @@ pub struct Rmrc {
     wjt: DMatrix<f64>,
     z: DVector<f64>,
     lambda: DVector<f64>,
+    /// Reciprocal diagonal of the Cholesky factor.
+    inv_diag: DVector<f64>,
     /// `D^-1` and `D^-1 u` of the weight (2n).
     scratch: DVector<f64>,
     /// Rows of the factorisation held in `b` (None before the first successful solve).
@@ -87,6 +89,7 @@ impl Rmrc {
             wjt: DMatrix::zeros(n, m_max),
             z: DVector::zeros(n),
             lambda: DVector::zeros(m_max),
+            inv_diag: DVector::zeros(m_max),
             scratch: DVector::zeros(2 * n),
             factored: None,
         }
@@ -112,7 +115,12 @@ impl Rmrc {
         for i in 0..m {
             self.b[(i, i)] += p.damping + p.softness.map_or(0.0, |s| s[i]);
         }
-        cholesky_in_place(&mut self.b, m)?;
+        cholesky_upper(
+            self.b.as_mut_slice(),
+            self.m_max,
+            m,
+            self.inv_diag.as_mut_slice(),
+        )?;
         self.factored = Some(m);
         self.back_substitute(p, qdot)
     }
@@ -158,7 +166,8 @@ impl Rmrc {
             let ji = &self.jt.as_slice()[i * n..(i + 1) * n];
             self.lambda[i] = p.xdot[i] - dot(ji, self.z.as_slice());
         }
-        cholesky_solve_in_place(&self.b, m, &mut self.lambda);
+        let (b, inv) = (self.b.as_slice(), self.inv_diag.as_slice());
+        cholesky_upper_solve(b, self.m_max, m, inv, self.lambda.as_mut_slice());
         qdot.copy_from(&self.z);
         let out = qdot.as_mut_slice();
         for k in 0..m {
@@ -176,7 +185,12 @@ impl Rmrc {
         self.check_jacobian(jacobian, rows)?;
         self.factored = None;
         self.assemble(jacobian, rows, &Weight::Identity)?;
-        match cholesky_in_place(&mut self.b, rows) {
+        match cholesky_upper(
+            self.b.as_mut_slice(),
+            self.m_max,
+            rows,
+            self.inv_diag.as_mut_slice(),
+        ) {
             Ok(()) => Ok((0..rows).map(|i| self.b[(i, i)]).product()),
             Err(IkError::NotPositiveDefinite) => Ok(0.0),
             Err(e) => Err(e),
@@ -195,10 +209,12 @@ impl Rmrc {
         let (jt, wjt) = (self.jt.as_slice(), self.wjt.as_mut_slice());
         let scratch = self.scratch.as_mut_slice();
         w.apply_inverse_columns(n, &jt[..m * n], &mut wjt[..m * n], scratch);
+        let (mm, b) = (self.m_max, self.b.as_mut_slice());
         for k in 0..m {
             let wk = &self.wjt.as_slice()[k * n..(k + 1) * n];
-            for i in k..m {
-                self.b[(i, k)] = dot(&jt[i * n..(i + 1) * n], wk);
+            for i in 0..=k {
+                // upper triangle: column k holds B[0..=k, k] contiguously
+                b[k * mm + i] = dot(&jt[i * n..(i + 1) * n], wk);
             }
         }
         check_finite("W^-1 J^T", &self.wjt.as_slice()[..m * n])
@@ -248,6 +264,44 @@ impl Rmrc {
             check_finite("Jacobian", &j.as_slice()[c * nr..c * nr + rows])?;
         }
         Ok(())
+    }
+}
+
+/// In-place Cholesky `B = L L^T` on the upper triangle of the leading `m x m` block of the
+/// column-major `mm x mm` buffer `b`: column `j` holds `B[0..=j, j]` on input and row `j` of
+/// `L` (`L[j, 0..=j]`) on output, so every inner product runs over contiguous memory.
+/// `inv[j] = 1 / L_jj` is stored too (multiplications instead of divisions on the chain).
+fn cholesky_upper(b: &mut [f64], mm: usize, m: usize, inv: &mut [f64]) -> Result<(), IkError> {
+    for j in 0..m {
+        let (done, rest) = b.split_at_mut(j * mm);
+        let col = &mut rest[..=j];
+        for i in 0..j {
+            let li = &done[i * mm..i * mm + i];
+            col[i] = (col[i] - dot(li, &col[..i])) * inv[i];
+        }
+        let d = col[j] - dot(&col[..j], &col[..j]);
+        if d.is_nan() || d <= 0.0 {
+            return Err(IkError::NotPositiveDefinite);
+        }
+        col[j] = d.sqrt();
+        inv[j] = 1.0 / col[j];
+    }
+    Ok(())
+}
+
+/// Solves `L L^T x = rhs` in place on `x[..m]` with the factor of [`cholesky_upper`].
+fn cholesky_upper_solve(b: &[f64], mm: usize, m: usize, inv: &[f64], x: &mut [f64]) {
+    for i in 0..m {
+        let li = &b[i * mm..i * mm + i];
+        x[i] = (x[i] - dot(li, &x[..i])) * inv[i];
+    }
+    for k in (0..m).rev() {
+        let lk = &b[k * mm..k * mm + k];
+        x[k] *= inv[k];
+        let xk = x[k];
+        for (xi, l) in x[..k].iter_mut().zip(lk) {
+            *xi -= l * xk;
+        }
     }
 }
 
