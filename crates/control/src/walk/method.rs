@@ -113,7 +113,7 @@ impl Default for WalkParams {
             minimization_delta: 0.003,
             arm_lock_weight: 1e6,
             settle_time: 0.3,
-            arm_pose: [0.0, 0.1, super::controller::WALK_ELBOW],
+            arm_pose: [0.0, 0.1, super::posture::WALK_ELBOW],
         }
     }
 }

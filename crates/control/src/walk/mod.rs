@@ -33,13 +33,13 @@ pub mod controller;
 mod error;
 pub mod evaluate;
 pub mod method;
+mod posture;
 pub mod run;
 mod targets;
 
-pub use controller::{
-    walk_pattern_params, walk_start_configuration, CycleInfo, WalkController, WALK_KNEE,
-};
+pub use controller::{CycleInfo, WalkController};
 pub use error::WalkError;
 pub use evaluate::{CycleMetrics, Evaluator};
 pub use method::{Method, WalkParams};
+pub use posture::{walk_pattern_params, walk_start_configuration, WALK_ELBOW, WALK_KNEE};
 pub use run::{run_walk, WalkRun, WalkSeries, WalkSummary};
