@@ -62,7 +62,7 @@ impl<'a> RmrcProblem<'a> {
 pub struct Rmrc {
     m_max: usize,
     n: usize,
-    /// `B = J W^-1 J^T (+ damping)` (upper triangle), then `L^T` of its Cholesky factor.
+    /// `B = J W^-1 J^T (+ damping)`, then its Cholesky factor `L` (lower triangle).
     b: DMatrix<f64>,
     /// `J^T` (n x m_max): row i of J is a contiguous column.
     jt: DMatrix<f64>,
@@ -115,7 +115,7 @@ impl Rmrc {
         for i in 0..m {
             self.b[(i, i)] += p.damping + p.softness.map_or(0.0, |s| s[i]);
         }
-        cholesky_upper(
+        cholesky_lower(
             self.b.as_mut_slice(),
             self.m_max,
             m,
@@ -167,7 +167,7 @@ impl Rmrc {
             self.lambda[i] = p.xdot[i] - dot(ji, self.z.as_slice());
         }
         let (b, inv) = (self.b.as_slice(), self.inv_diag.as_slice());
-        cholesky_upper_solve(b, self.m_max, m, inv, self.lambda.as_mut_slice());
+        cholesky_lower_solve(b, self.m_max, m, inv, self.lambda.as_mut_slice());
         qdot.copy_from(&self.z);
         let out = qdot.as_mut_slice();
         for k in 0..m {
@@ -185,7 +185,7 @@ impl Rmrc {
         self.check_jacobian(jacobian, rows)?;
         self.factored = None;
         self.assemble(jacobian, rows, &Weight::Identity)?;
-        match cholesky_upper(
+        match cholesky_lower(
             self.b.as_mut_slice(),
             self.m_max,
             rows,
@@ -209,14 +209,10 @@ impl Rmrc {
         let (jt, wjt) = (self.jt.as_slice(), self.wjt.as_mut_slice());
         let scratch = self.scratch.as_mut_slice();
         w.apply_inverse_columns(n, &jt[..m * n], &mut wjt[..m * n], scratch);
-        let (mm, b) = (self.m_max, self.b.as_mut_slice());
-        for k in 0..m {
-            let wk = &self.wjt.as_slice()[k * n..(k + 1) * n];
-            for i in 0..=k {
-                // upper triangle: column k holds B[0..=k, k] contiguously
-                b[k * mm + i] = dot(&jt[i * n..(i + 1) * n], wk);
-            }
-        }
+        // B = J (W^-1 J^T) as one matrix product (nalgebra's gemm, SIMD kernels); only the
+        // lower triangle is read by the factorisation
+        let mut b = self.b.view_mut((0, 0), (m, m));
+        b.gemm(1.0, &j.rows(0, m), &self.wjt.columns(0, m), 0.0);
         check_finite("W^-1 J^T", &self.wjt.as_slice()[..m * n])
     }
 
@@ -267,41 +263,46 @@ impl Rmrc {
     }
 }
 
-/// In-place Cholesky `B = L L^T` on the upper triangle of the leading `m x m` block of the
-/// column-major `mm x mm` buffer `b`: column `j` holds `B[0..=j, j]` on input and row `j` of
-/// `L` (`L[j, 0..=j]`) on output, so every inner product runs over contiguous memory.
-/// `inv[j] = 1 / L_jj` is stored too (multiplications instead of divisions on the chain).
-fn cholesky_upper(b: &mut [f64], mm: usize, m: usize, inv: &mut [f64]) -> Result<(), IkError> {
-    for j in 0..m {
-        let (done, rest) = b.split_at_mut(j * mm);
-        let col = &mut rest[..=j];
-        for i in 0..j {
-            let li = &done[i * mm..i * mm + i];
-            col[i] = (col[i] - dot(li, &col[..i])) * inv[i];
-        }
-        let d = col[j] - dot(&col[..j], &col[..j]);
+/// In-place right-looking Cholesky `B = L L^T` on the lower triangle of the leading `m x m`
+/// block of the column-major `mm x mm` buffer `b` (column `k` of `L` is contiguous). The
+/// trailing updates are independent axpys, so only `m` steps are on the dependency chain;
+/// `inv[k] = 1 / L_kk` is stored for the solves.
+fn cholesky_lower(b: &mut [f64], mm: usize, m: usize, inv: &mut [f64]) -> Result<(), IkError> {
+    for k in 0..m {
+        let d = b[k * mm + k];
         if d.is_nan() || d <= 0.0 {
             return Err(IkError::NotPositiveDefinite);
         }
-        col[j] = d.sqrt();
-        inv[j] = 1.0 / col[j];
+        let l = d.sqrt();
+        b[k * mm + k] = l;
+        inv[k] = 1.0 / l;
+        for x in &mut b[k * mm + k + 1..k * mm + m] {
+            *x *= inv[k];
+        }
+        for j in k + 1..m {
+            let (left, right) = b.split_at_mut(j * mm);
+            let ck = &left[k * mm + j..k * mm + m];
+            let ljk = ck[0];
+            for (x, y) in right[j..m].iter_mut().zip(ck) {
+                *x -= ljk * y;
+            }
+        }
     }
     Ok(())
 }
 
-/// Solves `L L^T x = rhs` in place on `x[..m]` with the factor of [`cholesky_upper`].
-fn cholesky_upper_solve(b: &[f64], mm: usize, m: usize, inv: &[f64], x: &mut [f64]) {
-    for i in 0..m {
-        let li = &b[i * mm..i * mm + i];
-        x[i] = (x[i] - dot(li, &x[..i])) * inv[i];
-    }
-    for k in (0..m).rev() {
-        let lk = &b[k * mm..k * mm + k];
+/// Solves `L L^T x = rhs` in place on `x[..m]` with the factor of [`cholesky_lower`].
+fn cholesky_lower_solve(b: &[f64], mm: usize, m: usize, inv: &[f64], x: &mut [f64]) {
+    for k in 0..m {
         x[k] *= inv[k];
         let xk = x[k];
-        for (xi, l) in x[..k].iter_mut().zip(lk) {
+        for (xi, l) in x[k + 1..m].iter_mut().zip(&b[k * mm + k + 1..k * mm + m]) {
             *xi -= l * xk;
         }
+    }
+    for i in (0..m).rev() {
+        let below = &b[i * mm + i + 1..i * mm + m];
+        x[i] = (x[i] - dot(below, &x[i + 1..m])) * inv[i];
     }
 }
 
