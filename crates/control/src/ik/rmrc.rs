@@ -209,10 +209,15 @@ impl Rmrc {
         let (jt, wjt) = (self.jt.as_slice(), self.wjt.as_mut_slice());
         let scratch = self.scratch.as_mut_slice();
         w.apply_inverse_columns(n, &jt[..m * n], &mut wjt[..m * n], scratch);
-        // B = J (W^-1 J^T) as one matrix product (nalgebra's gemm, SIMD kernels); only the
-        // lower triangle is read by the factorisation
-        let mut b = self.b.view_mut((0, 0), (m, m));
-        b.gemm(1.0, &j.rows(0, m), &self.wjt.columns(0, m), 0.0);
+        // lower triangle of B (column k holds B[k..m, k] contiguously); plain dots, because
+        // a gemm call would allocate packing buffers every cycle
+        let (mm, b) = (self.m_max, self.b.as_mut_slice());
+        for k in 0..m {
+            let wk = &self.wjt.as_slice()[k * n..(k + 1) * n];
+            for i in k..m {
+                b[k * mm + i] = dot(&jt[i * n..(i + 1) * n], wk);
+            }
+        }
         check_finite("W^-1 J^T", &self.wjt.as_slice()[..m * n])
     }
 
