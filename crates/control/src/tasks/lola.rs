@@ -169,16 +169,17 @@ impl LolaTasks {
         Ok(())
     }
 
-    /// CoG, foot and torso poses, arm CoGs at `q`; runs the centroidal and Jacobian passes.
+    /// CoG, foot and torso poses, arm CoGs at `q`; runs one kinematics pass for both.
     fn measure(&mut self, q: &DVector<f64>) -> Result<Measured, IkError> {
         let kin = |e: biped_dynamics::JacobianError| IkError::Kinematics(e.to_string());
-        self.cen
-            .compute_matrix(&self.model, &mut self.data, q)
-            .map_err(kin)?;
-        com_jacobian_from_ag(self.cen.ag().map_err(kin)?, self.cen.mass(), &mut self.jc);
         self.jac
             .compute(&self.model, &mut self.data, q)
             .map_err(kin)?;
+        // one FK pass: the centroidal matrix reuses the poses and columns just computed
+        self.cen
+            .compute_matrix_with(&self.model, &self.data, &self.jac)
+            .map_err(kin)?;
+        com_jacobian_from_ag(self.cen.ag().map_err(kin)?, self.cen.mass(), &mut self.jc);
         let pose = |b: usize| self.data.world_rot[b];
         let mut arm_cog = [Vector3::zeros(); 2];
         for ((cog, arm), mass) in arm_cog.iter_mut().zip(&self.arms).zip(self.arm_mass) {

@@ -135,8 +135,37 @@ impl Centroidal {
         self.assemble(model, data)
     }
 
-    /// Composite inertias, total mass, CoM and `A_G` from the poses and columns.
+    /// Same as [`Self::compute_matrix`] but reuses the kinematics of a preceding
+    /// [`Jacobians::compute`] (or its derivative variant) at the same `q`: `data` must hold
+    /// the body poses of that call, `jac` its world columns. Saves the second FK pass.
+    pub fn compute_matrix_with(
+        &mut self,
+        model: &Model,
+        data: &Data,
+        jac: &Jacobians,
+    ) -> Result<(), JacobianError> {
+        self.have_ag = false;
+        self.have_momentum = false;
+        jac.check_model(model)?;
+        crate::check::data(model, data)?;
+        if !jac.have_columns {
+            return Err(JacobianError::NotComputed("Jacobian columns"));
+        }
+        self.assemble_from(model, data, Some(jac))
+    }
+
+    /// Composite inertias, total mass, CoM and `A_G` from the poses and own columns.
     fn assemble(&mut self, model: &Model, data: &Data) -> Result<(), JacobianError> {
+        self.assemble_from(model, data, None)
+    }
+
+    /// [`Self::assemble`] with the world columns of `jac` (own columns if `None`).
+    fn assemble_from(
+        &mut self,
+        model: &Model,
+        data: &Data,
+        jac: Option<&Jacobians>,
+    ) -> Result<(), JacobianError> {
         self.composite_inertias(model, data);
         let mut total = CompositeInertia::default();
         for (i, body) in model.bodies().iter().enumerate() {
@@ -146,7 +175,13 @@ impl Centroidal {
         }
         self.mass = total.mass;
         self.set_com(&total.h)?;
-        self.fill_ag(model);
+        fill_ag(
+            &mut self.ag,
+            &self.sub_inertia,
+            &self.com,
+            jac.unwrap_or(&self.jac),
+            model,
+        );
         self.have_ag = true;
         Ok(())
     }
@@ -237,22 +272,6 @@ impl Centroidal {
         }
     }
 
-    /// `A_G`: every world column times its subtree inertia, shifted to the CoM.
-    fn fill_ag(&mut self, model: &Model) {
-        self.ag.as_mut_slice().fill(0.0);
-        for i in 0..model.nbodies() {
-            for k in self.jac.offset[i]..self.jac.offset[i + 1] {
-                let f = shift_to(&self.sub_inertia[i].apply(&self.jac.col[k]), &self.com);
-                let idx = self.jac.index[k];
-                let col = &mut self.ag.as_mut_slice()[6 * idx..6 * idx + 6];
-                for r in 0..3 {
-                    col[r] += f.ang[r];
-                    col[r + 3] += f.lin[r];
-                }
-            }
-        }
-    }
-
     /// `A_G v` as a force-like 6-vector.
     fn ag_times(&self, v: &DVector<f64>) -> Force {
         let mut h = [0.0; 6];
@@ -285,4 +304,26 @@ fn momentum_rate(model: &Model, data: &Data) -> Force {
         total += to_world.tr_apply_force(&f);
     }
     total
+}
+
+/// `A_G`: every world column of `jac` times its subtree inertia, shifted to the CoM `com`.
+fn fill_ag(
+    ag: &mut DMatrix<f64>,
+    sub_inertia: &[CompositeInertia],
+    com: &Vector3<f64>,
+    jac: &Jacobians,
+    model: &Model,
+) {
+    ag.as_mut_slice().fill(0.0);
+    for (i, inertia) in sub_inertia.iter().enumerate().take(model.nbodies()) {
+        for k in jac.offset[i]..jac.offset[i + 1] {
+            let f = shift_to(&inertia.apply(&jac.col[k]), com);
+            let idx = jac.index[k];
+            let col = &mut ag.as_mut_slice()[6 * idx..6 * idx + 6];
+            for r in 0..3 {
+                col[r] += f.ang[r];
+                col[r + 3] += f.lin[r];
+            }
+        }
+    }
 }

@@ -11,3 +11,6 @@ mod composite;
 
 pub use com::{center_of_mass, CenterOfMass};
 pub use composite::Centroidal;
+
+#[cfg(test)]
+mod tests;

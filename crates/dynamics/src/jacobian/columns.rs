@@ -130,14 +130,8 @@ impl Jacobians {
         Ok(())
     }
 
-    /// Validates model/workspace agreement and the state vectors.
-    fn check_inputs(
-        &self,
-        model: &Model,
-        data: &Data,
-        q: &DVector<f64>,
-        v: Option<&DVector<f64>>,
-    ) -> Result<(), JacobianError> {
+    /// Errors unless this workspace was sized for `model`.
+    pub(crate) fn check_model(&self, model: &Model) -> Result<(), JacobianError> {
         if model.nbodies() != self.nbodies() || model.nv() != self.nv {
             return Err(JacobianError::WorkspaceMismatch {
                 workspace_bodies: self.nbodies(),
@@ -146,6 +140,18 @@ impl Jacobians {
                 model_nv: model.nv(),
             });
         }
+        Ok(())
+    }
+
+    /// Validates model/workspace agreement and the state vectors.
+    fn check_inputs(
+        &self,
+        model: &Model,
+        data: &Data,
+        q: &DVector<f64>,
+        v: Option<&DVector<f64>>,
+    ) -> Result<(), JacobianError> {
+        self.check_model(model)?;
         check::data(model, data)?;
         check::configuration(model, q)?;
         if let Some(v) = v {
