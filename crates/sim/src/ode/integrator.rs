@@ -70,7 +70,7 @@ impl Integrator {
         t1: f64,
         z: &mut [f64],
     ) -> Result<StepStats, IntegrateError<S::Error>> {
-        self.run(sys, None, (t0, t1), z, &[], |_, _| {})
+        self.advance_dense(sys, t0, t1, z, &[], |_, _| {})
     }
 
     /// Like [`Self::advance`], calling `sink(t, z(t))` once per sorted output time in
@@ -96,11 +96,7 @@ impl Integrator {
         t1: f64,
         z: &mut [f64],
     ) -> Result<StepStats, IntegrateError<S::Error>> {
-        let split = Some((
-            sys.position_len(),
-            S::position_rate as fn(&S, &[f64], &mut [f64]),
-        ));
-        self.run(sys, split, (t0, t1), z, &[], |_, _| {})
+        self.advance_split_dense(sys, t0, t1, z, &[], |_, _| {})
     }
 
     /// Like [`Self::advance_dense`] for a split system; serves all four methods.
