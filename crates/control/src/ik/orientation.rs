@@ -13,36 +13,17 @@
 //! `omega_y` negated. [`euler_zxz_rates`] therefore inverts (C.5) itself
 //! (tests/ik_orientation.rs derives and checks the body-frame inverse).
 
-use nalgebra::{Matrix3, Rotation3, Vector3};
+use nalgebra::{Matrix3, Vector3};
 
 /// Orientation error `gamma e_e = log(A_d A^T)` (C.1) in the reference frame.
 pub fn orientation_error(desired: &Matrix3<f64>, current: &Matrix3<f64>) -> Vector3<f64> {
     rotation_log(&(desired * current.transpose()))
 }
 
-/// Rotation logarithm `gamma e` of a rotation matrix, accurate for small angles.
-///
-/// `sin(gamma) e = vee(R - R^T) / 2` and `cos(gamma) = (tr R - 1) / 2` give
-/// `gamma = atan2(|v|, cos)` without the `acos` cancellation near `gamma = 0`; close to
-/// `gamma = pi`, where `v` vanishes, the axis comes from nalgebra's eigen-based logarithm.
+/// Rotation logarithm `gamma e` of a rotation matrix (Appendix C), accurate near 0 and pi:
+/// the shared implementation [`biped_robots::calibration::so3_log`].
 pub fn rotation_log(r: &Matrix3<f64>) -> Vector3<f64> {
-    let v = 0.5
-        * Vector3::new(
-            r[(2, 1)] - r[(1, 2)],
-            r[(0, 2)] - r[(2, 0)],
-            r[(1, 0)] - r[(0, 1)],
-        );
-    let c = 0.5 * (r.trace() - 1.0);
-    let s = v.norm();
-    if c > -0.9 {
-        let gamma = s.atan2(c);
-        if s < 1e-300 {
-            return v;
-        }
-        v * (gamma / s)
-    } else {
-        Rotation3::from_matrix_unchecked(*r).scaled_axis()
-    }
+    biped_robots::calibration::so3_log(r)
 }
 
 /// Rotation matrix `A_Id` of Euler Z-X-Z angles `(phi, theta, psi)` (C.3).
