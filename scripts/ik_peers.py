@@ -1,0 +1,137 @@
+"""Per-step time of the QP-based IK peers pink and mink on a walking-like humanoid task set,
+beside `biped walk`'s IK cycle (issue: IK / walking).
+
+Robot: the Unitree G1 URDF (29 joints + floating base, 35 velocity DoF; Lola-like has 31).
+Tasks per step, both libraries alike: left and right foot frames (position + orientation),
+centre of mass, pelvis orientation, posture regularisation; the CoM target sways sideways
+and the left foot target lifts and moves forward like a step (targets move every cycle, as
+in a 1 kHz walk). One timed step = set the targets, build and solve the QP (daqp), integrate
+the velocity over dt = 1 ms. Joint limits: each library's configuration limit.
+Prints one JSON object per library with median and p99 step times in microseconds.
+
+Usage: $PEERS_PY scripts/ik_peers.py G1.urdf MESHDIR [--steps 2000]
+       (pip install pin-pink mink "qpsolvers[daqp]" into the peers venv first)
+"""
+import argparse
+import importlib.metadata
+import json
+import re
+import time
+
+import numpy as np
+
+DT = 1e-3
+FEET = ("left_ankle_roll_link", "right_ankle_roll_link")
+PELVIS = "pelvis"
+
+
+def targets(k, com0, foot0):
+    """CoM sway and a left-foot step as functions of the cycle index `k`."""
+    t = k * DT
+    com = com0 + np.array([0.05 * t, 0.04 * np.sin(2 * np.pi * t / 1.6), 0.0])
+    phase = np.clip((t % 0.8) / 0.8, 0.0, 1.0)
+    foot = foot0 + np.array([0.1 * phase, 0.0, 0.05 * np.sin(np.pi * phase)])
+    return com, foot
+
+
+def stats(samples):
+    a = np.array(samples) * 1e6
+    return {"median_us": float(np.median(a)), "p99_us": float(np.percentile(a, 99))}
+
+
+def run_pink(urdf, _meshdir, steps):
+    import pink
+    import pinocchio as pin
+    from pink.tasks import ComTask, FrameTask, PostureTask
+
+    model = pin.buildModelFromUrdf(urdf, pin.JointModelFreeFlyer())
+    data = model.createData()
+    q = pin.neutral(model)
+    q[2] = 0.75
+    conf = pink.Configuration(model, data, q)
+    feet = [FrameTask(f, position_cost=1.0, orientation_cost=1.0) for f in FEET]
+    pelvis = FrameTask(PELVIS, position_cost=0.0, orientation_cost=1.0)
+    com = ComTask(cost=1.0)
+    posture = PostureTask(cost=1e-3)
+    tasks = feet + [pelvis, com, posture]
+    for task in tasks:
+        task.set_target_from_configuration(conf)
+    com0 = pin.centerOfMass(model, data, q).copy()
+    left0 = feet[0].transform_target_to_world.copy()
+    times = []
+    for k in range(steps):
+        start = time.perf_counter()
+        c, f = targets(k, com0, left0.translation)
+        com.set_target(c)
+        target = left0.copy()
+        target.translation = f
+        feet[0].set_target(target)
+        vel = pink.solve_ik(conf, tasks, DT, solver="daqp", safety_break=False)
+        conf.integrate_inplace(vel, DT)
+        times.append(time.perf_counter() - start)
+    err = np.linalg.norm(pin.centerOfMass(model, data, conf.q) - c)
+    return {"peer": "pink " + importlib.metadata.version("pin-pink"), "nv": model.nv, "final_com_error_m": float(err), **stats(times[100:])}
+
+
+def mj_model(urdf, meshdir):
+    import mujoco
+
+    text = open(urdf).read()
+    text = re.sub(r'filename="package://[^"]*/meshes/', 'filename="', text)
+    text = re.sub(
+        r"(<robot[^>]*>)",
+        r'\1<mujoco><compiler meshdir="%s" discardvisual="true" balanceinertia="true"/></mujoco>'
+        % meshdir,
+        text,
+        count=1,
+    )
+    spec = mujoco.MjSpec.from_string(text)
+    root = spec.worldbody.first_body()
+    root.add_freejoint()
+    root.pos = [0, 0, 0.75]
+    return spec.compile()
+
+
+def run_mink(urdf, meshdir, steps):
+    import mink
+
+    model = mj_model(urdf, meshdir)
+    conf = mink.Configuration(model)
+    conf.update(model.qpos0)
+    feet = [
+        mink.FrameTask(f, "body", position_cost=1.0, orientation_cost=1.0) for f in FEET
+    ]
+    pelvis = mink.FrameTask(PELVIS, "body", position_cost=0.0, orientation_cost=1.0)
+    com = mink.ComTask(cost=1.0)
+    posture = mink.PostureTask(model, cost=1e-3)
+    tasks = feet + [pelvis, com, posture]
+    for task in tasks:
+        task.set_target_from_configuration(conf)
+    com0 = np.array(conf.data.subtree_com[1])
+    left0 = conf.get_transform_frame_to_world(FEET[0], "body")
+    limits = [mink.ConfigurationLimit(model)]
+    times = []
+    for k in range(steps):
+        start = time.perf_counter()
+        c, f = targets(k, com0, left0.translation())
+        com.set_target(c)
+        feet[0].set_target(mink.SE3.from_rotation_and_translation(left0.rotation(), f))
+        vel = mink.solve_ik(conf, tasks, DT, solver="daqp", damping=1e-6, limits=limits)
+        conf.integrate_inplace(vel, DT)
+        times.append(time.perf_counter() - start)
+    err = np.linalg.norm(np.array(conf.data.subtree_com[1]) - c)
+    return {"peer": "mink " + importlib.metadata.version("mink"), "nv": model.nv, "final_com_error_m": float(err), **stats(times[100:])}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("urdf")
+    ap.add_argument("meshdir")
+    ap.add_argument("--steps", type=int, default=2000)
+    args = ap.parse_args()
+    for run in (run_pink, run_mink):
+        print(json.dumps(run(args.urdf, args.meshdir, args.steps)))
+
+
+if __name__ == "__main__":
+    main()
