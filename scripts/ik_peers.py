@@ -1,21 +1,23 @@
-"""Per-step time of the QP-based IK peers pink and mink on a walking-like humanoid task set,
+"""Per-step time of the QP-based IK peers pink, mink and PlaCo on a walking-like humanoid task set,
 beside `biped walk`'s IK cycle (issue: IK / walking).
 
 Robot: the Unitree G1 URDF (29 joints + floating base, 35 velocity DoF; Lola-like has 31).
 Tasks per step, both libraries alike: left and right foot frames (position + orientation),
 centre of mass, pelvis orientation, posture regularisation; the CoM target sways sideways
 and the left foot target lifts and moves forward like a step (targets move every cycle, as
-in a 1 kHz walk). One timed step = set the targets, build and solve the QP (daqp), integrate
-the velocity over dt = 1 ms. Joint limits: each library's configuration limit.
+in a 1 kHz walk). One timed step = set the targets, build and solve the QP (daqp for pink and
+mink, PlaCo's own solver), integrate the velocity over dt = 1 ms (PlaCo: solve(True) + kinematics). Joint limits: each library's configuration limit.
 Prints one JSON object per library with median and p99 step times in microseconds.
 
 Usage: $PEERS_PY scripts/ik_peers.py G1.urdf MESHDIR [--steps 2000]
-       (pip install pin-pink mink "qpsolvers[daqp]" into the peers venv first)
+       (pip install pin-pink mink placo "qpsolvers[daqp]" into the peers venv first)
 """
 import argparse
 import importlib.metadata
 import json
+import os
 import re
+import tempfile
 import time
 
 import numpy as np
@@ -123,13 +125,56 @@ def run_mink(urdf, meshdir, steps):
     return {"peer": "mink " + importlib.metadata.version("mink"), "nv": model.nv, "final_com_error_m": float(err), **stats(times[100:])}
 
 
+def run_placo(urdf, _meshdir, steps):
+    import placo
+
+    # PlaCo loads meshes: give it the kinematic tree only.
+    text = re.sub(r"<(visual|collision)\b.*?</\1>", "", open(urdf).read(), flags=re.S)
+    path = os.path.join(tempfile.mkdtemp(), "robot.urdf")
+    with open(path, "w") as out:
+        out.write(text)
+    robot = placo.RobotWrapper(path, placo.Flags.ignore_collisions)
+    robot.set_T_world_frame("pelvis", np.array(
+        [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0.75], [0, 0, 0, 1]], dtype=float))
+    robot.update_kinematics()
+    solver = placo.KinematicsSolver(robot)
+    solver.mask_fbase(False)
+    solver.enable_joint_limits(True)
+    solver.dt = DT
+    feet = [solver.add_frame_task(f, robot.get_T_world_frame(f)) for f in FEET]
+    for task in feet:
+        task.configure("foot", "soft", 1.0, 1.0)
+    pelvis = solver.add_orientation_task(PELVIS, robot.get_T_world_frame(PELVIS)[:3, :3])
+    pelvis.configure("pelvis", "soft", 1.0)
+    com0 = robot.com_world().copy()
+    com = solver.add_com_task(com0)
+    com.configure("com", "soft", 1.0)
+    solver.add_regularization_task(1e-3)
+    left0 = robot.get_T_world_frame(FEET[0]).copy()
+    times = []
+    for k in range(steps):
+        start = time.perf_counter()
+        c, f = targets(k, com0, left0[:3, 3])
+        com.target_world = c
+        target = left0.copy()
+        target[:3, 3] = f
+        feet[0].T_world_frame = target
+        solver.solve(True)
+        robot.update_kinematics()
+        times.append(time.perf_counter() - start)
+    err = np.linalg.norm(robot.com_world() - c)
+    version = importlib.metadata.version("placo")
+    return {"peer": "placo " + version, "nv": robot.model.nv, "final_com_error_m": float(err),
+            **stats(times[100:])}
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("urdf")
     ap.add_argument("meshdir")
     ap.add_argument("--steps", type=int, default=2000)
     args = ap.parse_args()
-    for run in (run_pink, run_mink):
+    for run in (run_pink, run_mink, run_placo):
         print(json.dumps(run(args.urdf, args.meshdir, args.steps)))
 
 
