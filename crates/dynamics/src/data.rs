@@ -93,6 +93,9 @@ pub struct Data {
     pub(crate) knee_loop: Option<KneeLoopCache>,
     /// Body whose mechanism failed in the last kinematics pass (reported as an error).
     pub(crate) mechanism_fault: Option<(usize, MechanismError)>,
+    /// True while the kinematics of [`crate::forward_dynamics_kinematics`] are current (set by
+    /// it, cleared by every other kinematics pass): [`crate::forward_dynamics_solve`] needs it.
+    pub(crate) fd_kinematics: bool,
     /// Generalized accelerations (output of forward dynamics).
     pub ddq: DVector<f64>,
     /// Generalized forces (output of inverse dynamics).
@@ -194,6 +197,7 @@ impl Data {
             ankle_loop: None,
             knee_loop: None,
             mechanism_fault: None,
+            fd_kinematics: false,
             ddq: DVector::zeros(nv),
             tau: DVector::zeros(nv),
             mass: DMatrix::zeros(nv, nv),

@@ -153,6 +153,10 @@ pub enum DynamicsError {
         /// What the mechanism reported.
         source: MechanismError,
     },
+    /// [`crate::forward_dynamics_solve`] without current kinematics from
+    /// [`crate::forward_dynamics_kinematics`] (none yet, or another kinematics call since).
+    #[error("forward_dynamics_solve needs a preceding forward_dynamics_kinematics on this data")]
+    KinematicsNotCurrent,
     /// The algorithm does not support a feature of the model.
     #[error("algorithm not supported for this model: {0}")]
     Unsupported(&'static str),

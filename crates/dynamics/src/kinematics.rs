@@ -303,8 +303,10 @@ pub(crate) fn rotor_frames(model: &Model) -> Vec<SpatialTransform> {
     model.bodies.iter().map(frame).collect()
 }
 
-/// Error if a mechanism failed during the last kinematics pass (clears the record).
+/// Error if a mechanism failed during the last kinematics pass (clears the record). Every
+/// kinematics pass ends here, so this also marks the forward-dynamics kinematics as stale.
 pub(crate) fn take_fault(data: &mut Data) -> Result<(), DynamicsError> {
+    data.fd_kinematics = false;
     match data.mechanism_fault.take() {
         None => Ok(()),
         Some((body, source)) => Err(DynamicsError::Mechanism { body, source }),
@@ -374,6 +376,26 @@ pub(crate) fn first_forward(
 ) {
     for i in 0..model.nbodies() {
         body_kinematics(model, data, i, q, Some(v));
+        body_force(model, data, i, fext);
+    }
+}
+
+/// Kinematic half of the first forward recursion (Algorithm 2.2 without body forces): `C_i`,
+/// world poses, `g_i`, `v_i`, `b_i` and the mechanism loop caches of all bodies.
+pub(crate) fn first_forward_kinematics(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+) {
+    for i in 0..model.nbodies() {
+        body_kinematics(model, data, i, q, Some(v));
+    }
+}
+
+/// Body forces `f_i` (2.56) of all bodies from the kinematics already in `data`.
+pub(crate) fn body_forces(model: &Model, data: &mut Data, fext: Option<&[Wrench]>) {
+    for i in 0..model.nbodies() {
         body_force(model, data, i, fext);
     }
 }

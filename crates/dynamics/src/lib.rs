@@ -24,7 +24,10 @@ pub mod urdf;
 pub use centroidal::{center_of_mass, CenterOfMass, Centroidal};
 pub use configuration::{difference, integrate};
 pub use data::Data;
-pub use dynamics::{forward_dynamics, inverse_dynamics, mass_matrix, on, Algorithm};
+pub use dynamics::{
+    forward_dynamics, forward_dynamics_kinematics, forward_dynamics_solve, inverse_dynamics,
+    mass_matrix, on, Algorithm,
+};
 pub use error::{DynamicsError, ModelError};
 pub use jacobian::{JacobianError, JacobianFrame, Jacobians};
 pub use kinematics::{forward_kinematics, update_placements};

@@ -6,7 +6,9 @@ mod rnea;
 mod solve;
 
 use crate::check;
-use crate::kinematics::{body_kinematics, first_forward, take_fault};
+use crate::kinematics::{
+    body_forces, body_kinematics, first_forward, first_forward_kinematics, take_fault,
+};
 use crate::spatial::Wrench;
 use crate::{Data, DynamicsError, Model};
 use nalgebra::{DMatrix, DVector};
@@ -24,6 +26,8 @@ pub enum Algorithm {
 
 /// Generalized accelerations `qddot` for `(q, v, tau)`, gravity and optional external body
 /// wrenches (one per body, body frame); result is also in `data.ddq`.
+///
+/// Equals [`forward_dynamics_kinematics`] followed by [`forward_dynamics_solve`].
 pub fn forward_dynamics<'d>(
     model: &Model,
     data: &'d mut Data,
@@ -33,34 +37,73 @@ pub fn forward_dynamics<'d>(
     fext: Option<&[Wrench]>,
     algo: Algorithm,
 ) -> Result<&'d DVector<f64>, DynamicsError> {
-    match algo {
-        Algorithm::On => on::forward_dynamics(model, data, q, v, tau, fext),
-        Algorithm::Crba | Algorithm::Sparse => {
-            check::data(model, data)?;
-            check::configuration(model, q)?;
-            check::vector("v", v, model.nv())?;
-            check::vector("tau", tau, model.nv())?;
-            check::wrenches(model, fext)?;
-            first_forward(model, data, q, v, fext);
-            take_fault(data)?;
-            rnea::rnea_from_kinematics(model, data, None, true);
-            crba::crba(model, data);
-            data.factor.copy_from(&data.mass);
-            data.ddq.copy_from(tau);
-            data.ddq -= &data.nle;
-            if algo == Algorithm::Crba {
-                solve::cholesky_in_place(&mut data.factor)?;
-                solve::cholesky_solve_in_place(&data.factor, &mut data.ddq);
-            } else {
-                solve::ltl_in_place(&mut data.factor, &model.dof_parent, &data.mass)?;
-                solve::ltl_solve_in_place(&data.factor, &model.dof_parent, &mut data.ddq);
-            }
-            let ddq = std::mem::take(&mut data.ddq);
-            crate::kinematics::propagate_accelerations(model, data, Some(&ddq));
-            data.ddq = ddq;
-            Ok(&data.ddq)
-        }
+    forward_dynamics_kinematics(model, data, q, v)?;
+    forward_dynamics_solve(model, data, tau, fext, algo)
+}
+
+/// First phase of forward dynamics: the kinematic part of the first forward recursion
+/// (Algorithm 2.2, (2.33)-(2.37)) for `(q, v)`.
+///
+/// Valid in `data` after it returns: `x[i]` (`C_i`), `vel[i]`, `bias_acc[i]`, `gravity_body[i]`
+/// and the mechanisms' loop caches of every body, and `world_rot[i]` / `world_pos[i]` of every
+/// body that is not a Harmonic Drive rotor (rotor world poses may be stale; no FD output needs
+/// them). Forces, torques and external wrenches can then be computed from these kinematics
+/// (e.g. contact at the feet, drive torques) and passed to [`forward_dynamics_solve`].
+pub fn forward_dynamics_kinematics(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+) -> Result<(), DynamicsError> {
+    check::data(model, data)?;
+    check::configuration(model, q)?;
+    check::vector("v", v, model.nv())?;
+    first_forward_kinematics(model, data, q, v);
+    take_fault(data)?;
+    data.fd_kinematics = true;
+    Ok(())
+}
+
+/// Second phase of forward dynamics: body forces (2.56) with `tau` and optional external body
+/// wrenches, then the solve by `algo` (for [`Algorithm::On`] the backward and second forward
+/// passes, Algorithms 2.3-2.4); `qddot` is returned and also in `data.ddq`.
+///
+/// Needs the kinematics of a preceding [`forward_dynamics_kinematics`] (or [`forward_dynamics`])
+/// on the same `data` with no other kinematics call in between, else
+/// [`DynamicsError::KinematicsNotCurrent`]. May be called repeatedly (e.g. for several `tau`).
+pub fn forward_dynamics_solve<'d>(
+    model: &Model,
+    data: &'d mut Data,
+    tau: &DVector<f64>,
+    fext: Option<&[Wrench]>,
+    algo: Algorithm,
+) -> Result<&'d DVector<f64>, DynamicsError> {
+    check::data(model, data)?;
+    check::vector("tau", tau, model.nv())?;
+    check::wrenches(model, fext)?;
+    if !data.fd_kinematics {
+        return Err(DynamicsError::KinematicsNotCurrent);
     }
+    if algo == Algorithm::On {
+        return on::solve(model, data, tau, fext);
+    }
+    body_forces(model, data, fext);
+    rnea::rnea_from_kinematics(model, data, None, true);
+    crba::crba(model, data);
+    data.factor.copy_from(&data.mass);
+    data.ddq.copy_from(tau);
+    data.ddq -= &data.nle;
+    if algo == Algorithm::Crba {
+        solve::cholesky_in_place(&mut data.factor)?;
+        solve::cholesky_solve_in_place(&data.factor, &mut data.ddq);
+    } else {
+        solve::ltl_in_place(&mut data.factor, &model.dof_parent, &data.mass)?;
+        solve::ltl_solve_in_place(&data.factor, &model.dof_parent, &mut data.ddq);
+    }
+    let ddq = std::mem::take(&mut data.ddq);
+    crate::kinematics::propagate_accelerations(model, data, Some(&ddq));
+    data.ddq = ddq;
+    Ok(&data.ddq)
 }
 
 /// Joint-space mass matrix `M(q)` by CRBA (symmetric, full storage), also in `data.mass`.

@@ -14,7 +14,7 @@
 
 use super::solve::check_pivot;
 use crate::check;
-use crate::kinematics::{first_forward, six, take_fault};
+use crate::kinematics::{body_force, six};
 use crate::model::joint::Joint;
 use crate::spatial::{ArticulatedInertia, Force, Motion, Wrench};
 use crate::subsystem::{self, NodeKind};
@@ -30,13 +30,17 @@ pub fn forward_pass_1(
     v: &DVector<f64>,
     fext: Option<&[Wrench]>,
 ) -> Result<(), DynamicsError> {
-    check::data(model, data)?;
-    check::configuration(model, q)?;
-    check::vector("v", v, model.nv())?;
+    super::forward_dynamics_kinematics(model, data, q, v)?;
     check::wrenches(model, fext)?;
-    first_forward(model, data, q, v, fext);
-    take_fault(data)?;
+    dynamic_first_pass(model, data, fext);
+    Ok(())
+}
+
+/// Dynamic half of the first pass after [`super::forward_dynamics_kinematics`]: body forces
+/// `f_i` (2.56), `M-bar_i = M_i`, `f-bar_i = f_i` and the sub-system member kinematics.
+fn dynamic_first_pass(model: &Model, data: &mut Data, fext: Option<&[Wrench]>) {
     for (i, body) in model.bodies.iter().enumerate() {
+        body_force(model, data, i, fext);
         if data.mbar_needed[i] {
             data.mbar[i] = body.inertia.to_articulated();
         }
@@ -45,7 +49,19 @@ pub fn forward_pass_1(
     for s in 0..model.subsystems.len() {
         subsystem::on::hat_kinematics(model, data, s);
     }
-    Ok(())
+}
+
+/// Body forces and the backward and second forward passes (Algorithms 2.1-2.4 after the
+/// kinematics of [`super::forward_dynamics_kinematics`]); inputs are checked by the caller.
+pub(crate) fn solve<'d>(
+    model: &Model,
+    data: &'d mut Data,
+    tau: &DVector<f64>,
+    fext: Option<&[Wrench]>,
+) -> Result<&'d DVector<f64>, DynamicsError> {
+    dynamic_first_pass(model, data, fext);
+    backward_pass(model, data, tau)?;
+    Ok(forward_pass_2(model, data))
 }
 
 /// Backward recursion (Algorithm 2.3): `P_i, p_i, K_i, k_i` from the leaves to the root, with
@@ -196,18 +212,4 @@ fn body_forward(model: &Model, data: &mut Data, i: usize) {
         }
     };
     data.acc[i] = a + data.bias_acc[i];
-}
-
-/// The three passes in sequence (Algorithm 2.1).
-pub(crate) fn forward_dynamics<'d>(
-    model: &Model,
-    data: &'d mut Data,
-    q: &DVector<f64>,
-    v: &DVector<f64>,
-    tau: &DVector<f64>,
-    fext: Option<&[Wrench]>,
-) -> Result<&'d DVector<f64>, DynamicsError> {
-    forward_pass_1(model, data, q, v, fext)?;
-    backward_pass(model, data, tau)?;
-    Ok(forward_pass_2(model, data))
 }
