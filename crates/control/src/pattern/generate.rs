@@ -134,6 +134,32 @@ impl WalkingPattern {
         self.samples.iter()
     }
 
+    /// Adds a CoM offset per sample, `[x, y]` each as `(position, velocity, acceleration)`,
+    /// and the matching LIPM ZMP change `c * offset` to `zmp` (e.g. the multibody ZMP
+    /// correction of a second preview pass); `zmp_ref` is left as planned.
+    pub fn offset_com(&mut self, offset: &[[Vector3<f64>; 2]]) -> Result<(), PatternError> {
+        let finite = offset
+            .iter()
+            .flatten()
+            .all(|v| v.iter().all(|x| x.is_finite()));
+        if offset.len() != self.samples.len() || !finite {
+            return Err(PatternError::InvalidParameter {
+                name: "com offset",
+                value: offset.len() as f64,
+                reason: "needs one finite offset per sample",
+            });
+        }
+        for (s, o) in self.samples.iter_mut().zip(offset) {
+            for (i, d) in o.iter().enumerate() {
+                s.com[i] += d[0];
+                s.com_vel[i] += d[1];
+                s.com_acc[i] += d[2];
+                s.zmp[i] += (self.controller.c * d)[0];
+            }
+        }
+        Ok(())
+    }
+
     /// The parameters the pattern was generated with.
     pub fn params(&self) -> &PatternParams {
         &self.params

@@ -149,7 +149,7 @@ impl Evaluator {
 
 /// Free-joint entries of the inverse dynamics at `(q, v, a)` as world-axes force and moment
 /// about `point` (see the module docs).
-fn wrench(
+pub(crate) fn wrench(
     model: &Model,
     data: &mut Data,
     root: usize,

@@ -6,6 +6,8 @@
 //! - [`evaluate`]: per-cycle metrics: `L_z`, `dL_z/dt`, stance-foot torque `tau_z` by RNEA,
 //!   smallest SSV distance, joint-limit margin.
 //! - [`run`]: [`run_walk`], a whole walk with time series and a [`WalkSummary`].
+//! - [`dynamic`]: [`run_dynamic_walk`], the walk tracked by joint controllers in the contact
+//!   simulation of `biped_sim` (`biped walk --dynamic`).
 //!
 //! Resolved choices and known limits:
 //! - The arm CoG tasks of Table 4.2 are off for `none`, `compensation` and `minimization`
@@ -30,6 +32,7 @@
 //! - The IK runs `settle_time` on the first sample before the walk.
 
 pub mod controller;
+pub mod dynamic;
 mod error;
 pub mod evaluate;
 pub mod method;
@@ -38,6 +41,7 @@ pub mod run;
 mod targets;
 
 pub use controller::{CycleInfo, WalkController};
+pub use dynamic::{run_dynamic_walk, DynamicWalkParams, DynamicWalkRun, DynamicWalkSummary};
 pub use error::WalkError;
 pub use evaluate::{CycleMetrics, Evaluator};
 pub use method::{Method, WalkParams};

@@ -1,0 +1,146 @@
+//! Feedforward torques of the planned motion: inverse dynamics (RNEA) of the floating-base
+//! model with the ground wrench the motion needs distributed over the support feet.
+//!
+//! The free-joint entries of RNEA at `(q, qd, qdd)` without external forces are the wrench the
+//! ground must supply (see [`crate::walk::evaluate`]). In single support the stance foot takes
+//! all of it; in double support it is split by the position of the motion's own ZMP between
+//! the feet ([`Feedforward::foot_wrenches`]). With these wrenches as
+//! `f_ext` RNEA's free-joint entries vanish and its joint entries are the actuated joints'
+//! torques (`tau = M qdd + h - J^T f_ext`).
+
+use crate::pattern::{PatternSample, Phase};
+use crate::walk::error::{model_err, WalkError};
+use crate::walk::evaluate::wrench;
+use biped_dynamics::{inverse_dynamics, BodyId, Data, JointModel, Model, Wrench};
+use biped_robots::lola::LolaModel;
+use nalgebra::{DVector, Vector2, Vector3};
+
+/// Preallocated RNEA feedforward for Lola (own dynamics workspace).
+#[derive(Debug, Clone)]
+pub struct Feedforward {
+    model: Model,
+    data: Data,
+    root: BodyId,
+    feet: [BodyId; 2],
+    fext: Vec<Wrench>,
+    ground: (Vector3<f64>, Vector3<f64>),
+}
+
+impl Feedforward {
+    /// Feedforward for `lola` (feet `l_foot`, `r_foot`, the bodies carrying the soles).
+    pub fn new(lola: &LolaModel) -> Result<Self, WalkError> {
+        let model = lola.model.clone();
+        let root = model
+            .bodies()
+            .iter()
+            .position(|b| matches!(b.joint(), JointModel::FreeQuaternion))
+            .ok_or_else(|| model_err("no quaternion floating base"))?;
+        let id = |n: &str| {
+            model
+                .body_id(n)
+                .ok_or_else(|| model_err(format!("no body {n}")))
+        };
+        let feet = [id("l_foot")?, id("r_foot")?];
+        Ok(Self {
+            data: Data::new(&model),
+            fext: vec![Wrench::zero(); model.nbodies()],
+            ground: (Vector3::zeros(), Vector3::zeros()),
+            model,
+            root,
+            feet,
+        })
+    }
+
+    /// Shares of `[left, right]` in `phase`: the stance foot takes all in single support; in
+    /// double support `w_left` is the position of `zmp` projected on the segment from the
+    /// right foot `right` to the left foot `left`, clamped to \[0, 1].
+    pub fn shares(
+        phase: Phase,
+        zmp: Vector2<f64>,
+        left: Vector2<f64>,
+        right: Vector2<f64>,
+    ) -> [f64; 2] {
+        match phase {
+            Phase::LeftStance => [1.0, 0.0],
+            Phase::RightStance => [0.0, 1.0],
+            Phase::Double => {
+                let d = left - right;
+                let w = if d.norm_squared() > 1e-12 {
+                    ((zmp - right).dot(&d) / d.norm_squared()).clamp(0.0, 1.0)
+                } else {
+                    0.5
+                };
+                [w, 1.0 - w]
+            }
+        }
+    }
+
+    /// Foot wrenches (body frame, about the body origin) carrying the ground wrench of the
+    /// motion `(q, qd, qdd)` in the support phase of `s`: foot `i` takes `F_i = w_i F` at its
+    /// origin `p_i` ([`Self::shares`] of the motion's own ZMP) and the share `w_i` of the
+    /// residual moment `M_0 - sum p_i x F_i` (small: the ZMP lies near the segment), so that the
+    /// wrenches sum to the required one and each foot's centre of pressure stays near its sole.
+    /// The last RNEA's kinematics stay in the workspace.
+    pub fn foot_wrenches(
+        &mut self,
+        q: &DVector<f64>,
+        qd: &DVector<f64>,
+        qdd: &DVector<f64>,
+        s: &PatternSample,
+    ) -> Result<[Wrench; 2], WalkError> {
+        let (f, m0) = wrench(
+            &self.model,
+            &mut self.data,
+            self.root,
+            (q, qd, qdd),
+            &Vector3::zeros(),
+        )?;
+        self.ground = (f, m0);
+        let p = self.feet.map(|b| self.data.world_pos[b]);
+        let zmp = self.zmp().unwrap_or_else(|| 0.5 * (p[0] + p[1]).xy());
+        let w = Self::shares(s.phase, zmp, p[0].xy(), p[1].xy());
+        let fi = w.map(|wi| f * wi);
+        let residual = m0 - p[0].cross(&fi[0]) - p[1].cross(&fi[1]);
+        Ok([0, 1].map(|i| {
+            let rt = self.data.world_rot[self.feet[i]].transpose();
+            Wrench::new(rt * (residual * w[i]), rt * fi[i])
+        }))
+    }
+
+    /// ZMP of the last ground wrench (force `F`, moment `M_0` about the world origin) on
+    /// the ground plane `z = 0`: `(-M_0y / F_z, M_0x / F_z)`; `None` when `F_z <= 0`.
+    pub fn zmp(&self) -> Option<Vector2<f64>> {
+        let (f, m) = self.ground;
+        (f.z > 1e-9).then(|| Vector2::new(-m.y / f.z, m.x / f.z))
+    }
+
+    /// Generalized forces of the planned motion with the distributed ground wrench: the
+    /// actuated joints' feedforward torques (the free-joint entries are ~0 by construction).
+    pub fn compute(
+        &mut self,
+        q: &DVector<f64>,
+        qd: &DVector<f64>,
+        qdd: &DVector<f64>,
+        s: &PatternSample,
+    ) -> Result<&DVector<f64>, WalkError> {
+        let feet = self.foot_wrenches(q, qd, qdd, s)?;
+        self.with_wrenches(q, qd, qdd, feet)
+    }
+
+    /// Generalized forces with explicit foot wrenches `[left, right]` (body frame, about the
+    /// body origin), e.g. measured ones.
+    pub fn with_wrenches(
+        &mut self,
+        q: &DVector<f64>,
+        qd: &DVector<f64>,
+        qdd: &DVector<f64>,
+        feet: [Wrench; 2],
+    ) -> Result<&DVector<f64>, WalkError> {
+        self.fext.fill(Wrench::zero());
+        for (b, w) in self.feet.iter().zip(feet) {
+            self.fext[*b] = w;
+        }
+        inverse_dynamics(&self.model, &mut self.data, q, qd, qdd, Some(&self.fext))
+            .map_err(model_err)
+    }
+}

@@ -1,0 +1,142 @@
+//! [`run_dynamic_walk`]: the kinematic walk tracked in the contact simulation, with its time
+//! series and pass criteria.
+
+use super::reference::{build_reference, JointReference};
+use super::tracking::TrackingController;
+use super::{DynamicWalkParams, DynamicWalkSeries, DynamicWalkSummary};
+use crate::pattern::WalkingPattern;
+use crate::walk::error::{model_err, WalkError};
+use crate::walk::walk_pattern_params;
+use biped_robots::lola::LolaType;
+use biped_sim::plant::{lola_plant, Plant, PlantConfig};
+use biped_sim::simulation::{Frame, Simulation};
+use biped_sim::{Method as Integrator, SimError};
+use nalgebra::DVector;
+use std::time::Instant;
+
+/// Result of [`run_dynamic_walk`].
+#[derive(Debug, Clone)]
+pub struct DynamicWalkRun {
+    /// Time series, one row per control cycle.
+    pub series: DynamicWalkSeries,
+    /// Summary and verdict.
+    pub summary: DynamicWalkSummary,
+}
+
+/// Runs the kinematic walk of `p`, then tracks it with [`TrackingController`] on the Lola
+/// Type 2 plant (torque mode, RK4 at the 1 ms control period) until the walk plus
+/// `p.hold_time` is over or the robot falls.
+pub fn run_dynamic_walk(p: &DynamicWalkParams) -> Result<DynamicWalkRun, WalkError> {
+    p.validate()?;
+    let lp = lola_plant(LolaType::Type2, PlantConfig::default()).map_err(model_err)?;
+    let (mut plant, lola) = (lp.plant, lp.lola);
+    let pattern = WalkingPattern::generate(&walk_pattern_params(
+        &lola,
+        p.steps,
+        p.step_length,
+        p.step_time,
+    )?)?;
+    let reference = build_reference(&lola, &pattern, &p.reference_options())?;
+    let q0 = start_on_ground(&plant, &reference.q0)?;
+    let z0 = plant
+        .initial_state(&q0, &DVector::zeros(plant.layout().nv))
+        .map_err(model_err)?;
+    let mut ctrl = TrackingController::new(
+        &mut plant,
+        reference.clone(),
+        &q0,
+        (p.bandwidth, p.damping),
+        p.feedforward,
+        p.stabiliser,
+    )
+    .map_err(model_err)?;
+    ctrl.scale_gains(p.gain_scale);
+    let mut sim = Simulation::new(plant, ctrl, Integrator::Rk4, z0).map_err(model_err)?;
+    let duration = (reference.len() - 1) as f64 * reference.dt + p.hold_time;
+    simulate(&mut sim, &reference, p, duration, q0[2])
+}
+
+/// `q` shifted vertically so that the lowest sole point sits at the static penetration of
+/// the contact law under the robot's weight shared by all points.
+pub fn start_on_ground(plant: &Plant, q: &DVector<f64>) -> Result<DVector<f64>, WalkError> {
+    let mut q = q.clone();
+    let model = plant.model();
+    let mass: f64 = model.bodies().iter().map(|b| b.inertia().mass()).sum();
+    let c = plant.contact();
+    let per_point = mass * model.gravity().norm() / c.npoints().max(1) as f64;
+    let pen = c.params().static_penetration(per_point);
+    let (qi, _) = plant
+        .floating_base()
+        .ok_or_else(|| model_err("plant without floating base"))?;
+    let low = c.lowest_point(q.as_slice(), plant.layout().nv);
+    q[qi + 2] += c.params().ground_height - pen - low;
+    Ok(q)
+}
+
+/// Runs the loop in chunks of 50 ms, recording every cycle and stopping at a fall.
+fn simulate(
+    sim: &mut Simulation<TrackingController>,
+    r: &JointReference,
+    p: &DynamicWalkParams,
+    duration: f64,
+    z_start: f64,
+) -> Result<DynamicWalkRun, WalkError> {
+    let mut s = DynamicWalkSeries::default();
+    let (qi, _) = sim
+        .plant()
+        .floating_base()
+        .ok_or_else(|| model_err("plant without floating base"))?;
+    let fall_height = z_start - p.fall_drop;
+    let mut fell_at = None;
+    let rhs0 = sim.plant().rhs_count();
+    let start = Instant::now();
+    let chunk = 0.05_f64;
+    while sim.time() < duration - 1e-9 && fell_at.is_none() {
+        let span = chunk.min(duration - sim.time());
+        let mut obs = |f: &Frame| -> Result<(), SimError> {
+            if s.t.last().is_some_and(|&t| f.t <= t + 1e-9) {
+                return Ok(());
+            }
+            record(&mut s, f, r, qi);
+            let (z, tilt) = (f.z[qi + 2], *s.tilt.last().unwrap_or(&0.0));
+            if fell_at.is_none() && (z < fall_height || tilt > p.max_tilt) {
+                fell_at = Some(f.t);
+            }
+            Ok(())
+        };
+        sim.run(span, &mut obs).map_err(model_err)?;
+    }
+    let wall = start.elapsed().as_secs_f64();
+    let rhs = sim.plant().rhs_count() - rhs0;
+    let summary = DynamicWalkSummary::evaluate(&s, r, p, (wall, rhs), fell_at);
+    Ok(DynamicWalkRun { series: s, summary })
+}
+
+/// Appends one cycle of signals.
+fn record(s: &mut DynamicWalkSeries, f: &Frame, r: &JointReference, qi: usize) {
+    let z = f.z;
+    let k = r.index(f.t);
+    s.t.push(f.t);
+    s.base.push([z[qi], z[qi + 1], z[qi + 2]]);
+    s.planned_base_x.push(r.base[k].x);
+    let (x, y) = (z[qi + 3], z[qi + 4]);
+    let n2 = z[qi + 3..qi + 7]
+        .iter()
+        .map(|c| c * c)
+        .sum::<f64>()
+        .max(1e-300);
+    s.tilt
+        .push((1.0 - 2.0 * (x * x + y * y) / n2).clamp(-1.0, 1.0).acos());
+    let feet = &f.plant.last_outputs().contact.feet;
+    let foot = |i: usize, g: fn(&biped_sim::contact::FootWrench) -> f64| feet.get(i).map_or(0.0, g);
+    s.foot_fz
+        .push([foot(0, |w| w.force.z), foot(1, |w| w.force.z)]);
+    s.tau_z
+        .push([foot(0, |w| w.torque.z), foot(1, |w| w.torque.z)]);
+    let q = r.row(&r.q, k);
+    let err = q
+        .iter()
+        .zip(&f.sensors.joint_positions)
+        .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+    s.tracking_error.push(err);
+}
