@@ -2,9 +2,11 @@
 //! integrate the plant over one control period, repeat; with an observer hook per cycle and
 //! a serialisable [`Summary`].
 
+mod momentum;
 mod signals;
 mod summary;
 
+pub use momentum::{centroidal_sample, CentroidalSample};
 pub use signals::Signals;
 pub use summary::{Check, Summary};
 

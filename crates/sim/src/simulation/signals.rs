@@ -1,17 +1,19 @@
 //! Named signals of a frame for the recorder: `q[i]`, `v[i]`, per foot the ground wrench
 //! (`<foot>.fx .. <foot>.tz`, world axes, torque about the sole reference point) and the
 //! centre of pressure, per actuator the command `cmd[<joint>]` and the motor current
-//! `i[<joint>]`, and optionally the CoM and the centroidal angular momentum `L_G` about it.
+//! `i[<joint>]`, and optionally the CoM and the centroidal angular momentum `L_G` about it
+//! (one kinematics pass per recorded frame, [`super::momentum`]).
 
+use super::momentum::centroidal_sample;
 use super::Frame;
 use crate::error::SimError;
 use crate::plant::Plant;
 use crate::record::{Recorder, SignalId};
-use biped_dynamics::{Centroidal, Data, Model};
+use biped_dynamics::{Data, Model};
 use nalgebra::DVector;
 
-/// Own model copy, workspaces and `(q, v)` buffers for the centroidal momentum.
-type MomentumWork = (Model, Data, Centroidal, DVector<f64>, DVector<f64>);
+/// Own model copy, workspace and `(q, v)` buffers for the centroidal momentum.
+type MomentumWork = (Model, Data, DVector<f64>, DVector<f64>);
 
 /// Signal names and a reusable value buffer (own kinematics workspace for `L_G`).
 pub struct Signals {
@@ -22,7 +24,7 @@ pub struct Signals {
 }
 
 impl Signals {
-    /// Signals of `plant`; `momentum` adds `com.*` and `L_G.*` (one centroidal computation per
+    /// Signals of `plant`; `momentum` adds `com.*` and `L_G.*` (one kinematics pass per
     /// recorded frame).
     pub fn new(plant: &Plant, momentum: bool) -> Self {
         let l = plant.layout();
@@ -42,8 +44,8 @@ impl Signals {
         let momentum = momentum.then(|| {
             names.extend(["com.x", "com.y", "com.z", "L_G.x", "L_G.y", "L_G.z"].map(String::from));
             let m = plant.model().clone();
-            let (d, c) = (Data::new(&m), Centroidal::new(&m));
-            (m, d, c, DVector::zeros(l.nq), DVector::zeros(l.nv))
+            let d = Data::new(&m);
+            (m, d, DVector::zeros(l.nq), DVector::zeros(l.nv))
         });
         let values = Vec::with_capacity(names.len());
         Self {
@@ -74,12 +76,11 @@ impl Signals {
         }
         v.extend_from_slice(&frame.commands.values);
         v.extend_from_slice(&frame.sensors.motor_currents);
-        if let Some((m, d, c, q, qd)) = self.momentum.as_mut() {
+        if let Some((m, d, q, qd)) = self.momentum.as_mut() {
             q.as_mut_slice().copy_from_slice(&frame.z[l.q()]);
             qd.as_mut_slice().copy_from_slice(&frame.z[l.v()]);
-            c.compute(m, d, q, qd)?;
-            let h = c.momentum()?;
-            let com = c.com();
+            let s = centroidal_sample(m, d, q, qd)?;
+            let (com, h) = (s.com, s.momentum);
             v.extend_from_slice(&[com.x, com.y, com.z, h.ang.x, h.ang.y, h.ang.z]);
         }
         Ok(&self.values)
