@@ -21,14 +21,15 @@
 //! touch-down and never pulls (clamped at 0).
 
 pub mod chain;
+mod forces;
 pub mod law;
 
 pub use chain::{BodyChain, BodyState};
 pub use law::ContactParams;
 
 use crate::error::SimError;
-use biped_dynamics::{BodyId, Model, Wrench};
-use nalgebra::{Vector2, Vector3};
+use biped_dynamics::{BodyId, Model};
+use nalgebra::Vector3;
 
 /// A foot: the body carrying the sole and its contact points.
 #[derive(Debug, Clone, PartialEq)]
@@ -178,53 +179,6 @@ impl ContactSet {
             point_forces: vec![Vector3::zeros(); self.npoints],
             feet: vec![FootWrench::default(); self.feet.len()],
             foot_states: vec![BodyState::identity(); self.feet.len()],
-        }
-    }
-
-    /// Contact forces at `(q, v)` with bristle states `s`: writes the bristle rates into `sdot`,
-    /// sets the foot bodies' entries of `fext` (body frame, moment about the body origin) and
-    /// fills `out`. No allocation. `fext` entries of other bodies are left alone.
-    pub fn evaluate(
-        &self,
-        q: &[f64],
-        v: &[f64],
-        s: &[f64],
-        sdot: &mut [f64],
-        fext: &mut [Wrench],
-        out: &mut ContactOutput,
-    ) {
-        let p = &self.params;
-        for (k, foot) in self.feet.iter().enumerate() {
-            let st = foot.chain.eval(q, v);
-            let reference = st.pos + st.rot * foot.spec.reference;
-            let (mut wb, mut fw) = (Wrench::zero(), FootWrench::default());
-            let (mut fn_sum, mut cop) = (0.0, Vector3::zeros());
-            for (j, c) in foot.spec.points.iter().enumerate() {
-                let idx = foot.first + j;
-                let (pos, vel) = st.point(c);
-                let delta = p.ground_height - pos.z;
-                let f_n = p.normal_force(delta, -vel.z);
-                let sj = Vector2::new(s[2 * idx], s[2 * idx + 1]);
-                let (f_t, rate) = p.tangential(sj, Vector2::new(vel.x, vel.y), f_n);
-                sdot[2 * idx] = rate.x;
-                sdot[2 * idx + 1] = rate.y;
-                let f = Vector3::new(f_t.x, f_t.y, f_n);
-                out.point_forces[idx] = f;
-                if f_n > 0.0 {
-                    fw.points_in_contact += 1;
-                    fn_sum += f_n;
-                    cop += Vector3::new(pos.x, pos.y, p.ground_height) * f_n;
-                }
-                fw.force += f;
-                fw.torque += (pos - reference).cross(&f);
-                let fb = st.rot.transpose() * f;
-                wb.ang += c.cross(&fb);
-                wb.lin += fb;
-            }
-            fw.cop = (fn_sum > 0.0).then(|| cop / fn_sum);
-            fext[foot.body] = wb;
-            out.feet[k] = fw;
-            out.foot_states[k] = st;
         }
     }
 }

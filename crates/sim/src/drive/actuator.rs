@@ -145,6 +145,12 @@ impl Actuator {
         })
     }
 
+    /// Whether the motor-rate row depends on `q` (roller-screw rotors); the rows of the other
+    /// transmissions are constant and need [`Self::motor_row`] only once.
+    pub fn row_varies(&self) -> bool {
+        matches!(self.transmission, Transmission::Rotor { .. })
+    }
+
     /// Motor-rate row at `q`; `None` for `Direct`.
     pub fn motor_row(&self, model: &Model, q: &[f64]) -> Result<Option<MotorRow>, SimError> {
         Ok(match self.transmission {

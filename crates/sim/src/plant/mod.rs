@@ -4,11 +4,13 @@
 //! (the actuator commands) is held inside the plant and set by the control loop before each
 //! control period (zero-order hold, Fig. 2.1).
 //!
-//! One right-hand side: contact forces from the foot chains, drive and gear torques, one
-//! forward-dynamics call, `qdot` from `v`. Every buffer is allocated in [`Plant::new`].
+//! One right-hand side ([`forces`]): the kinematic phase of forward dynamics, contact forces
+//! from its foot poses, drive and gear torques, the solve phase, `qdot` from `v`. Every buffer
+//! is allocated in [`Plant::new`].
 
 mod build;
 mod energy;
+mod forces;
 mod inertia;
 pub mod kinematics;
 pub mod layout;
@@ -24,7 +26,7 @@ use crate::drive::actuator::{DriveState, MotorRow};
 use crate::drive::{Actuator, DriveMode, FrictionParams, MotorParams};
 use crate::error::{finite, SimError};
 use crate::ode::{OdeSystem, SplitSystem};
-use biped_dynamics::{forward_dynamics, Algorithm, Data, Model, Wrench};
+use biped_dynamics::{Algorithm, Data, Model, Wrench};
 use biped_robots::lola::ElasticGear;
 use kinematics::QdotMap;
 use nalgebra::DVector;
@@ -102,6 +104,7 @@ pub struct Plant {
     v: DVector<f64>,
     tau: DVector<f64>,
     fext: Vec<Wrench>,
+    /// Motor-rate rows: constant ones from [`Plant::new`], roller-screw rows per evaluation.
     rows: Vec<Option<MotorRow>>,
     out: PlantOutputs,
     scratch: Vec<f64>,
@@ -151,6 +154,11 @@ impl Plant {
         };
         let mut data = Data::new(&model);
         let gear_damping = inertia::gear_dampers(&model, &mut data, &gears, &config)?;
+        let q0 = model.neutral();
+        let rows = actuators
+            .iter()
+            .map(|a| a.motor_row(&model, q0.as_slice()))
+            .collect::<Result<Vec<_>, _>>()?;
         Ok(Self {
             data,
             gear_damping,
@@ -159,7 +167,7 @@ impl Plant {
             v: DVector::zeros(model.nv()),
             tau: DVector::zeros(model.nv()),
             fext: vec![Wrench::zero(); model.nbodies()],
-            rows: vec![None; actuators.len()],
+            rows,
             commands: vec![0.0; actuators.len()],
             model,
             config,
@@ -261,7 +269,7 @@ impl Plant {
     /// contact-state rates computed on the way are discarded.
     pub fn outputs(&mut self, z: &[f64]) -> Result<&PlantOutputs, SimError> {
         let mut scratch = std::mem::take(&mut self.scratch);
-        let r = self.forces(z, &mut scratch);
+        let r = self.chain_forces(z, &mut scratch);
         self.scratch = scratch;
         r.map(|_| &self.out)
     }
@@ -290,82 +298,6 @@ impl Plant {
     /// Workspace of the last dynamics or kinematics call (body poses etc.).
     pub fn data(&self) -> &Data {
         &self.data
-    }
-
-    /// Copies `z` into the work vectors, then contact, drive and gear forces into `fext` and
-    /// `tau`, contact and current rates into `zdot`.
-    fn forces(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
-        let l = self.layout;
-        if z.len() != l.dim() || zdot.len() != l.dim() {
-            return Err(SimError::Length {
-                what: "z",
-                got: z.len(),
-                expected: l.dim(),
-            });
-        }
-        self.q.as_mut_slice().copy_from_slice(&z[l.q()]);
-        self.v.as_mut_slice().copy_from_slice(&z[l.v()]);
-        let (q, v) = (self.q.as_slice(), self.v.as_slice());
-        self.contact.evaluate(
-            q,
-            v,
-            &z[l.contact()],
-            &mut zdot[l.contact()],
-            &mut self.fext,
-            &mut self.out.contact,
-        );
-        self.tau.fill(0.0);
-        let tau = self.tau.as_mut_slice();
-        let voltage = self.config.mode == DriveMode::Voltage;
-        for (k, a) in self.actuators.iter().enumerate() {
-            self.rows[k] = a.motor_row(&self.model, q)?;
-            let i = if voltage {
-                z[l.currents().start + k]
-            } else {
-                0.0
-            };
-            let ds = a.apply(
-                self.rows[k].as_ref(),
-                self.config.mode,
-                self.commands[k],
-                i,
-                v,
-                tau,
-            );
-            if voltage {
-                zdot[l.currents().start + k] = ds.current_rate;
-            }
-            self.out.drives[k] = ds;
-        }
-        let k = self.config.gear_stiffness;
-        for (g, &d) in self.gears.iter().zip(&self.gear_damping) {
-            let torque = k * (q[g.motor_q] / g.ratio - q[g.link_q])
-                + d * (v[g.motor_v] / g.ratio - v[g.link_v]);
-            tau[g.link_v] += torque;
-            tau[g.motor_v] -= torque / g.ratio;
-        }
-        Ok(())
-    }
-
-    /// The right-hand side with typed errors.
-    fn eval(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
-        self.rhs_count += 1;
-        self.forces(z, zdot)?;
-        let l = self.layout;
-        let (m, algo) = (&self.model, self.config.algorithm);
-        let ddq = forward_dynamics(
-            m,
-            &mut self.data,
-            &self.q,
-            &self.v,
-            &self.tau,
-            Some(&self.fext),
-            algo,
-        )?;
-        finite("qddot", ddq.as_slice())?;
-        zdot[l.v()].copy_from_slice(ddq.as_slice());
-        self.qdot.qdot(&z[l.q()], &z[l.v()], &mut zdot[l.q()]);
-        Ok(())
     }
 }
 

@@ -1,0 +1,95 @@
+//! The plant's right-hand side (2.2)-(2.4) and its force layers.
+//!
+//! Right-hand side: [`biped_dynamics::forward_dynamics_kinematics`] (first forward recursion:
+//! body poses, velocities, mechanism loops), then contact forces from the foot poses and
+//! velocities of that pass, drive and gear torques, then
+//! [`biped_dynamics::forward_dynamics_solve`]. So one evaluation runs one kinematics pass.
+//!
+//! [`Plant::outputs`] (contact and drive outputs without a dynamics call) takes the general
+//! route instead: foot states from each foot's own joint chain ([`crate::contact::BodyChain`]),
+//! which is cheaper than a kinematics pass over all bodies when no dynamics follows.
+//! `tests/sim_fastpath.rs` checks that both routes give the same outputs.
+
+use super::Plant;
+use crate::drive::DriveMode;
+use crate::error::{finite, SimError};
+use biped_dynamics::{forward_dynamics_kinematics, forward_dynamics_solve};
+
+impl Plant {
+    /// Checks the lengths of `z` and `zdot` and copies `q`, `v` of `z` into the work vectors.
+    fn load(&mut self, z: &[f64], zdot: &[f64]) -> Result<(), SimError> {
+        let l = self.layout;
+        if z.len() != l.dim() || zdot.len() != l.dim() {
+            return Err(SimError::Length {
+                what: "z",
+                got: z.len(),
+                expected: l.dim(),
+            });
+        }
+        self.q.as_mut_slice().copy_from_slice(&z[l.q()]);
+        self.v.as_mut_slice().copy_from_slice(&z[l.v()]);
+        Ok(())
+    }
+
+    /// Contact forces from the foot chains, then drive and gear torques (the general route,
+    /// no dynamics workspace involved); contact and current rates into `zdot`.
+    pub(super) fn chain_forces(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
+        self.load(z, zdot)?;
+        let l = self.layout;
+        let (q, v) = (self.q.as_slice(), self.v.as_slice());
+        let (s, sdot) = (&z[l.contact()], &mut zdot[l.contact()]);
+        let out = &mut self.out.contact;
+        self.contact.evaluate(q, v, s, sdot, &mut self.fext, out);
+        self.drive_forces(z, zdot)
+    }
+
+    /// Drive torques of every actuator (motor rows of roller-screw rotors refreshed at `q`)
+    /// and elastic gear torques into `tau`; current rates into `zdot` in voltage mode.
+    fn drive_forces(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
+        let l = self.layout;
+        let (q, v) = (self.q.as_slice(), self.v.as_slice());
+        self.tau.fill(0.0);
+        let tau = self.tau.as_mut_slice();
+        let mode = self.config.mode;
+        let voltage = mode == DriveMode::Voltage;
+        let currents = l.currents().start;
+        for (k, a) in self.actuators.iter().enumerate() {
+            if a.row_varies() {
+                self.rows[k] = a.motor_row(&self.model, q)?;
+            }
+            let i = if voltage { z[currents + k] } else { 0.0 };
+            let ds = a.apply(self.rows[k].as_ref(), mode, self.commands[k], i, v, tau);
+            if voltage {
+                zdot[currents + k] = ds.current_rate;
+            }
+            self.out.drives[k] = ds;
+        }
+        let k = self.config.gear_stiffness;
+        for (g, &d) in self.gears.iter().zip(&self.gear_damping) {
+            let torque = k * (q[g.motor_q] / g.ratio - q[g.link_q])
+                + d * (v[g.motor_v] / g.ratio - v[g.link_v]);
+            tau[g.link_v] += torque;
+            tau[g.motor_v] -= torque / g.ratio;
+        }
+        Ok(())
+    }
+
+    /// The right-hand side with typed errors (one kinematics pass, see the module docs).
+    pub(super) fn eval(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
+        self.rhs_count += 1;
+        self.load(z, zdot)?;
+        let l = self.layout;
+        forward_dynamics_kinematics(&self.model, &mut self.data, &self.q, &self.v)?;
+        let (s, sdot) = (&z[l.contact()], &mut zdot[l.contact()]);
+        let out = &mut self.out.contact;
+        self.contact
+            .evaluate_from(&self.data, s, sdot, &mut self.fext, out);
+        self.drive_forces(z, zdot)?;
+        let (m, algo) = (&self.model, self.config.algorithm);
+        let ddq = forward_dynamics_solve(m, &mut self.data, &self.tau, Some(&self.fext), algo)?;
+        finite("qddot", ddq.as_slice())?;
+        zdot[l.v()].copy_from_slice(ddq.as_slice());
+        self.qdot.qdot(&z[l.q()], &z[l.v()], &mut zdot[l.q()]);
+        Ok(())
+    }
+}

@@ -1,0 +1,156 @@
+//! The plant's right-hand side (one kinematics pass shared by contact, drives and dynamics,
+//! cached constant motor rows) equals the general route assembled here from public parts:
+//! contact forces from the foot chains, every motor row re-evaluated from its mechanism,
+//! `forward_dynamics` in one call. Lola Type 2 and Type 3, all drive modes, random states
+//! with feet in and out of contact, unnormalised quaternions (as inside an RK4 step).
+
+use biped_dynamics::{forward_dynamics, Algorithm, Data, Wrench};
+use biped_robots::lola::LolaType;
+use biped_sim::controller::Commands;
+use biped_sim::drive::DriveMode;
+use biped_sim::ode::OdeSystem;
+use biped_sim::plant::kinematics::QdotMap;
+use biped_sim::plant::{lola_plant, Plant, PlantConfig};
+use biped_sim::scenario::{build, ScenarioKind, ScenarioOptions};
+use nalgebra::DVector;
+use rand::{Rng, SeedableRng};
+
+/// `zdot` and the contact/drive outputs by the general route.
+fn reference(p: &Plant, z: &[f64]) -> (Vec<f64>, Vec<Wrench>) {
+    let (l, m) = (p.layout(), p.model());
+    let (q, v) = (&z[l.q()], &z[l.v()]);
+    let mut zdot = vec![0.0; l.dim()];
+    let mut fext = vec![Wrench::zero(); m.nbodies()];
+    let mut out = p.contact().output();
+    let (s, sdot) = (&z[l.contact()], &mut zdot[l.contact()]);
+    p.contact().evaluate(q, v, s, sdot, &mut fext, &mut out);
+    let mut tau = vec![0.0; l.nv];
+    for (k, a) in p.actuators().iter().enumerate() {
+        let row = a.motor_row(m, q).unwrap();
+        let i = if p.mode() == DriveMode::Voltage {
+            z[l.currents().start + k]
+        } else {
+            0.0
+        };
+        let ds = a.apply(row.as_ref(), p.mode(), p.commands()[k], i, v, &mut tau);
+        if p.mode() == DriveMode::Voltage {
+            zdot[l.currents().start + k] = ds.current_rate;
+        }
+    }
+    let k = p.config().gear_stiffness;
+    assert!(p.gears().is_empty() || p.config().gear_damping_ratio == 0.0);
+    for g in p.gears() {
+        let t = k * (q[g.motor_q] / g.ratio - q[g.link_q]);
+        tau[g.link_v] += t;
+        tau[g.motor_v] -= t / g.ratio;
+    }
+    let mut d = Data::new(m);
+    let (qd, vd, td) = (
+        DVector::from_column_slice(q),
+        DVector::from_column_slice(v),
+        DVector::from_column_slice(&tau),
+    );
+    let ddq = forward_dynamics(m, &mut d, &qd, &vd, &td, Some(&fext), Algorithm::On).unwrap();
+    zdot[l.v()].copy_from_slice(ddq.as_slice());
+    QdotMap::new(m).qdot(q, v, &mut zdot[l.q()]);
+    (zdot, fext)
+}
+
+/// Compares at one random state; returns the number of points in contact.
+fn compare(kind: LolaType, mode: DriveMode, seed: u64) -> usize {
+    let config = PlantConfig {
+        mode,
+        gear_damping_ratio: 0.0,
+        ..PlantConfig::default()
+    };
+    let mut lp = lola_plant(kind, config).unwrap();
+    let opts = ScenarioOptions::lola();
+    let sc = build(ScenarioKind::Stand, &mut lp.plant, &opts).unwrap();
+    let mut p = lp.plant;
+    let l = p.layout();
+    let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+    let mut z = sc.z0.clone();
+    // Random joint and base motion, sink/lift the base so that some points touch, bristles
+    // and currents away from zero, a slightly unnormalised quaternion.
+    for x in &mut z[l.q().start + 7..l.q().end] {
+        *x += rng.random_range(-0.05..0.05);
+    }
+    z[2] += rng.random_range(-0.002..0.003);
+    z[6] *= 1.0 + 1e-4;
+    for x in &mut z[l.v()] {
+        *x = rng.random_range(-0.5..0.5);
+    }
+    for x in &mut z[l.contact().start..] {
+        *x = rng.random_range(-1e-4..1e-4);
+    }
+    let cmd: Vec<f64> = (0..p.actuators().len())
+        .map(|_| rng.random_range(-2.0..2.0))
+        .collect();
+    p.set_commands(&Commands { mode, values: cmd }).unwrap();
+    let (zref, fref) = reference(&p, &z);
+    let mut zdot = vec![0.0; l.dim()];
+    p.rhs(0.0, &z, &mut zdot).unwrap();
+    let scale = zref.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+    for (i, (a, b)) in zdot.iter().zip(&zref).enumerate() {
+        assert!(
+            (a - b).abs() <= 1e-10 * scale,
+            "{kind:?} {mode:?} zdot[{i}] {a} vs {b}"
+        );
+    }
+    for (a, b) in p.external_wrenches().iter().zip(&fref) {
+        let d = (a.ang - b.ang).norm() + (a.lin - b.lin).norm();
+        assert!(d <= 1e-9 * (1.0 + b.lin.norm()), "fext {a:?} vs {b:?}");
+    }
+    let fast = p.last_outputs().clone();
+    let general = p.outputs(&z).unwrap();
+    for (a, b) in fast.contact.feet.iter().zip(&general.contact.feet) {
+        assert_eq!(a.points_in_contact, b.points_in_contact);
+        assert!((a.force - b.force).norm() <= 1e-9 * (1.0 + b.force.norm()));
+        assert!((a.torque - b.torque).norm() <= 1e-9 * (1.0 + b.torque.norm()));
+    }
+    for (a, b) in fast
+        .contact
+        .foot_states
+        .iter()
+        .zip(&general.contact.foot_states)
+    {
+        assert!((a.rot - b.rot).norm() + (a.pos - b.pos).norm() < 1e-12);
+        assert!((a.omega - b.omega).norm() + (a.vel - b.vel).norm() < 1e-12);
+    }
+    for (a, b) in fast.drives.iter().zip(&general.drives) {
+        assert!(
+            (a.speed - b.speed).abs() <= 1e-12 * (1.0 + b.speed.abs()),
+            "{a:?} {b:?}"
+        );
+        assert!((a.friction - b.friction).abs() <= 1e-12 * (1.0 + b.friction.abs()));
+        assert_eq!(
+            (a.torque, a.current, a.current_rate),
+            (b.torque, b.current, b.current_rate)
+        );
+    }
+    fast.contact.feet.iter().map(|f| f.points_in_contact).sum()
+}
+
+#[test]
+fn rhs_equals_the_general_route_type2() {
+    for (s, mode) in [DriveMode::Torque, DriveMode::Current, DriveMode::Voltage]
+        .into_iter()
+        .enumerate()
+    {
+        let touching: Vec<usize> = (0..4)
+            .map(|k| compare(LolaType::Type2, mode, 10 * s as u64 + k))
+            .collect();
+        assert!(
+            touching.iter().any(|&n| n > 0) && touching.iter().any(|&n| n < 16),
+            "{touching:?}"
+        );
+    }
+}
+
+#[test]
+fn rhs_equals_the_general_route_type3() {
+    let touching: usize = (0..3)
+        .map(|k| compare(LolaType::Type3, DriveMode::Torque, 100 + k))
+        .sum();
+    assert!(touching > 0);
+}
