@@ -1,5 +1,6 @@
-//! `biped walk`: summary.json with the four methods and their fields, CSV and SVG files; bad
-//! arguments fail with one line.
+//! `biped walk`: summary.json with the four methods and their fields, CSV and SVG files; with
+//! `--dynamic` also `dynamic.csv`, its plots and the `"dynamic"` entry; bad arguments fail with
+//! one line.
 
 use std::process::Command;
 
@@ -52,11 +53,77 @@ fn bad_arguments_fail_with_one_line() {
         vec!["walk", "--steps", "0"],
         vec!["walk", "--step-time=-1"],
         vec!["walk", "--step-length=nan"],
-        vec!["walk", "--dynamic"],
+        vec!["walk", "--dynamic", "--steps", "0"],
+        vec!["walk", "--dynamic", "--method", "foo"],
+        vec!["walk", "--dynamic", "--step-time=-1"],
     ] {
         let out = biped().args(&args).output().unwrap();
         assert!(!out.status.success(), "{args:?}");
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
     }
+}
+
+#[test]
+fn dynamic_walk_writes_csv_plots_and_summary_entry() {
+    let dir = std::env::temp_dir().join(format!("biped_walk_dyn_{}", std::process::id()));
+    let out = biped()
+        .args([
+            "walk",
+            "--steps",
+            "4",
+            "--method",
+            "none",
+            "--dynamic",
+            "--out",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.contains("dynamic (none): walked"), "{stdout}");
+    let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert!(
+        v["none"]["peak_abs_Lz"].as_f64().is_some(),
+        "method entry kept"
+    );
+    assert!(v.get("minimization").is_none(), "only the chosen method");
+    let d = &v["dynamic"];
+    assert_eq!(d["walked"], serde_json::Value::Bool(true), "{d}");
+    assert!(d["fell_at"].is_null());
+    for key in [
+        "distance",
+        "planned_distance",
+        "max_tilt",
+        "min_base_height",
+        "max_tracking_error",
+        "realtime_factor",
+        "rhs_evaluations",
+    ] {
+        let x = d[key].as_f64().unwrap_or(f64::NAN);
+        assert!(x.is_finite(), "dynamic.{key} = {x}");
+    }
+    assert!(d["distance"].as_f64().unwrap() >= 0.8 * d["planned_distance"].as_f64().unwrap());
+    let csv = std::fs::read_to_string(dir.join("dynamic.csv")).unwrap();
+    let header = csv.lines().next().unwrap();
+    for col in ["base_x", "base_z", "trunk_tilt", "fz_left", "tau_z_right"] {
+        assert!(header.contains(col), "{header}");
+    }
+    assert!(csv.lines().count() > 3000);
+    for svg in [
+        "dynamic_base.svg",
+        "dynamic_tilt.svg",
+        "dynamic_fz.svg",
+        "dynamic_tau_z.svg",
+    ] {
+        let s = std::fs::read_to_string(dir.join(svg)).unwrap();
+        assert!(s.contains("<svg"), "{svg}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -1,10 +1,15 @@
 //! `biped walk`: Lola's whole-body IK over a walking pattern with the arm methods of thesis
 //! ch. 7; writes per-method CSV, SVG plots in the style of Fig. 7.1/7.4 and `summary.json`.
+//! With `--dynamic` the walk of one method (`--method`, default minimisation) is then tracked
+//! in the contact simulation: `dynamic.csv`, plots and a `"dynamic"` summary entry.
 
 use super::CliResult;
 use biped_control::pattern::WalkingPattern;
 use biped_control::walk::run::RECORDED_JOINTS;
-use biped_control::walk::{run_walk, walk_pattern_params, Method, WalkParams, WalkRun};
+use biped_control::walk::{
+    run_dynamic_walk, run_walk, walk_pattern_params, DynamicWalkParams, DynamicWalkRun,
+    DynamicWalkSummary, Method, WalkParams, WalkRun,
+};
 use biped_robots::lola::{self, LolaType};
 use biped_sim::Recorder;
 use clap::Args;
@@ -26,7 +31,8 @@ pub struct WalkArgs {
     /// Arm method: none, reference, compensation, minimization or all.
     #[arg(long, default_value = "all")]
     method: String,
-    /// Track the joint trajectories in the full dynamic simulation (not available yet).
+    /// Then track the walk of one method (--method, default minimization) in the contact
+    /// simulation; fails if the robot falls.
     #[arg(long)]
     dynamic: bool,
     /// Output directory.
@@ -40,9 +46,6 @@ pub fn run(args: WalkArgs) -> CliResult {
         "all" => Method::ALL.to_vec(),
         m => vec![m.parse()?],
     };
-    if args.dynamic {
-        return Err("--dynamic: the dynamic walking simulation is not available yet".into());
-    }
     if args.steps == 0 {
         return Err("--steps must be at least 1".into());
     }
@@ -51,7 +54,7 @@ pub fn run(args: WalkArgs) -> CliResult {
     let pattern = WalkingPattern::generate(&params)?;
     std::fs::create_dir_all(&args.out)?;
     let mut runs = Vec::new();
-    for m in methods {
+    for &m in &methods {
         let run = run_walk(&lola, &pattern, m, WalkParams::default())?;
         write_csv(&run, &args.out.join(format!("{m}.csv")))?;
         eprintln!("{m}: peak |L_z| {:.3} N m s, peak |tau_z| {:.2} N m, min distance {:.4} m, IK median {:.1} us",
@@ -68,10 +71,127 @@ pub fn run(args: WalkArgs) -> CliResult {
             ))
         })
         .collect::<Result<_, serde_json::Error>>()?;
+    let mut summary = summary;
+    let dynamic = if args.dynamic {
+        let method = match methods.as_slice() {
+            [m] => *m,
+            _ => Method::Minimization,
+        };
+        let run = dynamic_walk(&args, method)?;
+        summary.insert("dynamic".into(), serde_json::to_value(run.summary)?);
+        Some(run)
+    } else {
+        None
+    };
     let text = serde_json::to_string_pretty(&summary)?;
     std::fs::write(args.out.join("summary.json"), text)?;
     println!("wrote {}", args.out.display());
-    Ok(ExitCode::SUCCESS)
+    match dynamic.map(|r| r.summary) {
+        Some(s) if !s.walked => Err(verdict_error(&s).into()),
+        _ => Ok(ExitCode::SUCCESS),
+    }
+}
+
+/// One-line error of a failed dynamic walk.
+fn verdict_error(s: &DynamicWalkSummary) -> String {
+    let what = match s.fell_at {
+        Some(t) => format!("the robot fell at t = {t:.3} s"),
+        None => "the robot did not advance enough".to_string(),
+    };
+    format!(
+        "--dynamic: {what}: {:.2} m of {:.2} m planned, max trunk tilt {:.3} rad",
+        s.distance, s.planned_distance, s.max_tilt
+    )
+}
+
+/// Runs the dynamic walk, writes `dynamic.csv` and its plots, prints the verdict line.
+fn dynamic_walk(
+    args: &WalkArgs,
+    method: Method,
+) -> Result<DynamicWalkRun, Box<dyn std::error::Error>> {
+    let p = DynamicWalkParams {
+        steps: args.steps,
+        step_length: args.step_length,
+        step_time: args.step_time,
+        method,
+        ..DynamicWalkParams::default()
+    };
+    let run = run_dynamic_walk(&p)?;
+    let s = &run.summary;
+    println!(
+        "dynamic ({method}): {} - {:.2} m of {:.2} m planned ({:.0} %), max trunk tilt {:.3} rad, min base height {:.3} m, max tracking error {:.4} rad, peak |tau_z| {:.2} N m, realtime factor {:.2}",
+        if s.walked { "walked" } else { "FAILED" },
+        s.distance,
+        s.planned_distance,
+        100.0 * s.progress,
+        s.max_tilt,
+        s.min_base_height,
+        s.max_tracking_error,
+        s.peak_abs_tau_z,
+        s.realtime_factor
+    );
+    write_dynamic(&run, &args.out)?;
+    Ok(run)
+}
+
+/// `dynamic.csv` and the plots of base x/z, trunk tilt, vertical foot forces and `tau_z`.
+fn write_dynamic(run: &DynamicWalkRun, out: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    let s = &run.series;
+    let mut rec = Recorder::with_capacity(s.t.len());
+    for k in 0..s.t.len() {
+        rec.sample(s.t[k])?;
+        let [x, y, z] = s.base[k];
+        for (name, v) in [
+            ("base_x", x),
+            ("base_y", y),
+            ("base_z", z),
+            ("planned_base_x", s.planned_base_x[k]),
+            ("trunk_tilt", s.tilt[k]),
+            ("fz_left", s.foot_fz[k][0]),
+            ("fz_right", s.foot_fz[k][1]),
+            ("tau_z_left", s.tau_z[k][0]),
+            ("tau_z_right", s.tau_z[k][1]),
+            ("tracking_error", s.tracking_error[k]),
+        ] {
+            rec.set(name, v)?;
+        }
+    }
+    rec.write_csv(&out.join("dynamic.csv"))?;
+    let plots: [(&[&str], &str, &str, &str); 4] = [
+        (
+            &["base_x", "planned_base_x", "base_z"],
+            "base position [m]",
+            "dynamic_base.svg",
+            "base x (simulated, planned) and height",
+        ),
+        (
+            &["trunk_tilt"],
+            "tilt [rad]",
+            "dynamic_tilt.svg",
+            "trunk tilt",
+        ),
+        (
+            &["fz_left", "fz_right"],
+            "F_z [N]",
+            "dynamic_fz.svg",
+            "vertical foot forces",
+        ),
+        (
+            &["tau_z_left", "tau_z_right"],
+            "tau_z [N m]",
+            "dynamic_tau_z.svg",
+            "vertical torque on the feet (F/T sensors)",
+        ),
+    ];
+    for (names, unit, file, title) in plots {
+        rec.plot_svg(
+            &out.join(file),
+            &format!("dynamic walk: {title}"),
+            names,
+            unit,
+        )?;
+    }
+    Ok(())
 }
 
 /// Time series of one method as CSV.
