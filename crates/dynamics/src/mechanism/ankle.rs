@@ -17,7 +17,10 @@
 //!   [`MechanismError::OutOfRange`].
 //! - the screw/rotor turns by `phi_i = N_screw l_i + offset_i` (3.22), (3.27).
 //!
-//! Derivatives (3.30)-(3.37) are exact, propagated by [`super::jet`].
+//! Derivatives (3.30)-(3.37) are exact: propagated by [`super::jet`] in the reference
+//! [`Coupling::motion`], written out in closed form in the fast path (`closure.rs`) used by
+//! [`AnkleCoupling::relative_cached`], [`AnkleDrive::transmission`] and the spin rows; the two
+//! agree to round-off (tested).
 //!
 //! Parts ([`AnklePart`], each a [`Coupling`] with the two ankle angles as inputs, relative to the
 //! shank): the nut (screw frame translated by `l_i`), the rotor (screw frame spun by `phi_i`)
@@ -26,8 +29,12 @@
 //! `x = normalize(s_y x z)`, `y = z x x` (a rod between two ball joints has no physical roll;
 //! this choice equals the screw frame when the rod is parallel to the screw).
 
-use super::jet::{bad_param, seed_inputs, FrameJet, SJet, VJet};
+mod closure;
+
+use super::cache::LoopSlots;
+use super::jet::{bad_param, input_arrays, seed_inputs, FrameJet, SJet, VJet};
 use super::{CoupledMotion, Coupling, MechanismError, RelativeMotion};
+use closure::{trig, Closure};
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 use std::f64::consts::PI;
 use std::ops::{Add, Mul, Sub};
@@ -235,20 +242,21 @@ impl AnkleDrive {
         q: [f64; 2],
         qd: [f64; 2],
     ) -> Result<AnkleTransmission, MechanismError> {
-        let qj = seed_inputs::<2>(NAME, &q, &qd)?;
+        let (q, qd) = input_arrays::<2>(NAME, &q, &qd)?;
+        let t = trig(q);
         let l = [
-            self.cranks[0].close_loop(&qj)?.travel,
-            self.cranks[1].close_loop(&qj)?.travel,
+            self.cranks[0].solve(q, t, qd)?,
+            self.cranks[1].solve(q, t, qd)?,
         ];
         let n = self.screw_ratio();
         let acts = &self.params.actuators;
         Ok(AnkleTransmission {
-            travel: Vector2::new(l[0].v, l[1].v),
-            jacobian: Matrix2::new(l[0].d[0], l[0].d[1], l[1].d[0], l[1].d[1]),
-            jdot_qd: Vector2::new(l[0].acc, l[1].acc),
+            travel: Vector2::new(l[0].l, l[1].l),
+            jacobian: Matrix2::new(l[0].l_q[0], l[0].l_q[1], l[1].l_q[0], l[1].l_q[1]),
+            jdot_qd: Vector2::new(l[0].l_acc, l[1].l_acc),
             motor_angles: Vector2::new(
-                n * l[0].v + acts[0].motor_offset,
-                n * l[1].v + acts[1].motor_offset,
+                n * l[0].l + acts[0].motor_offset,
+                n * l[1].l + acts[1].motor_offset,
             ),
         })
     }
@@ -410,14 +418,19 @@ impl SliderCrank {
     }
 }
 
-/// A closed slider-crank loop at given inputs, shared by the three parts (nut, rotor, rod) of
-/// one actuator so that the loop (3.23)-(3.29) is solved once per actuator, not once per part.
+/// Closed slider-crank loops of the last kinematics pass, keyed by crank geometry and exact
+/// inputs (see [`super::cache`]): the three parts (nut, rotor, rod) of one actuator share one
+/// loop closure (3.23)-(3.29), the two actuators of one ankle share the sines and cosines, and
+/// [`crate::Data::coupled_spin_row`] reads the motor rows back.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct AnkleLoop(LoopSlots<AnkleKey, Closure>);
+
+/// Identity of a closed loop: the crank and its exact inputs.
 #[derive(Debug, Clone, Copy)]
-pub struct AnkleLoop {
+struct AnkleKey {
     crank: SliderCrank,
     q: [f64; 2],
     qd: [f64; 2],
-    lp: Loop,
 }
 
 /// One part of one slider-crank of an [`AnkleDrive`] as a [`Coupling`] (inputs: flexion,
@@ -434,10 +447,10 @@ impl AnkleCoupling {
         &self,
         q: [f64; 2],
     ) -> Result<(Vector3<f64>, Vector3<f64>), MechanismError> {
-        let qj = seed_inputs::<2>(NAME, &q, &[0.0; 2])?;
+        let (q, _) = input_arrays::<2>(NAME, &q, &[0.0; 2])?;
         let a = &self.crank.act;
-        let lp = self.crank.close_loop(&qj)?;
-        Ok((lp.foot_ball.v, a.screw_top + a.screw_axis * lp.travel.v))
+        let c = self.crank.solve(q, trig(q), [0.0; 2])?;
+        Ok((c.foot, a.screw_top + a.screw_axis * c.l))
     }
 }
 
@@ -461,25 +474,53 @@ impl AnkleCoupling {
         qd_in: &[f64],
         cache: &mut Option<AnkleLoop>,
     ) -> Result<RelativeMotion, MechanismError> {
-        let q = seed_inputs::<2>(NAME, q_in, qd_in)?;
-        let (qv, qdv) = ([q[0].v, q[1].v], [q[0].vel, q[1].vel]);
-        let hit = cache
-            .as_ref()
-            .filter(|c| c.q == qv && c.qd == qdv && c.crank == self.crank);
-        let lp = match hit {
-            Some(c) => c.lp,
+        let (q, qd) = input_arrays::<2>(NAME, q_in, qd_in)?;
+        let slots = &mut cache.get_or_insert_with(AnkleLoop::default).0;
+        let crank = &self.crank;
+        let hit = slots.find(|k| k.q == q && k.qd == qd && k.crank == *crank);
+        let closure = match hit {
+            Some(c) => *c,
             None => {
-                let lp = self.crank.close_loop(&q)?;
-                *cache = Some(AnkleLoop {
-                    crank: self.crank,
-                    q: qv,
-                    qd: qdv,
-                    lp,
-                });
-                lp
+                let t = slots.find(|k| k.q == q).map_or_else(|| trig(q), |c| c.trig);
+                let c = crank.solve(q, t, qd)?;
+                slots.store(
+                    AnkleKey {
+                        crank: *crank,
+                        q,
+                        qd,
+                    },
+                    c,
+                );
+                c
             }
         };
-        Ok(self.crank.frame_of(self.part, &lp).relative())
+        Ok(crank.part_motion(self.part, &closure))
+    }
+
+    /// Part-frame z row of this part's relative Jacobian at `q_in` (for the rotor the motor
+    /// row `N_screw dl/dq`, (3.22), (3.32)), from `cache` when it holds this crank closed at
+    /// exactly `q_in`, else from a fresh loop closure.
+    pub fn spin_row_cached(
+        &self,
+        q_in: &[f64],
+        cache: Option<&AnkleLoop>,
+    ) -> Result<[f64; 2], MechanismError> {
+        let (q, _) = input_arrays::<2>(NAME, q_in, &[0.0; 2])?;
+        let crank = &self.crank;
+        let hit = cache.and_then(|c| c.0.find(|k| k.q == q && k.crank == *crank));
+        let fresh;
+        let closure = match hit {
+            Some(c) => c,
+            None => {
+                fresh = crank.solve(q, trig(q), [0.0; 2])?;
+                &fresh
+            }
+        };
+        if self.part == AnklePart::Rotor {
+            return Ok(closure.l_q.map(|x| crank.ratio * x));
+        }
+        let m = crank.part_motion(self.part, closure);
+        Ok([m.jacobian[0][2], m.jacobian[1][2]])
     }
 }
 
@@ -499,8 +540,9 @@ impl Coupling for AnkleCoupling {
 mod tests {
     use super::*;
 
-    /// The cached evaluation equals the uncached one part by part, across actuators (cache
-    /// misses on a different crank) and across inputs (misses on different `q` or `qd`).
+    /// The cached fast path equals the jet reference part by part (to round-off), across
+    /// actuators (misses on a different crank) and inputs (misses on different `q` or `qd`);
+    /// hits return the stored loop bit for bit; the spin rows equal the reference's z rows.
     #[test]
     fn cached_motion_equals_motion() {
         let drive = AnkleDrive::new(AnkleDriveParams::default()).expect("default drive");
@@ -513,15 +555,29 @@ mod tests {
             for act in 0..2 {
                 for part in [AnklePart::Nut, AnklePart::Rotor, AnklePart::Rod] {
                     let c = drive.part(act, part).expect("part");
-                    let cached = c.motion_cached(&q, &qd, &mut cache).expect("cached");
-                    assert_eq!(cached, c.motion(&q, &qd).expect("motion"));
-                    assert_eq!(cache.as_ref().map(|l| l.crank), Some(c.crank));
+                    let fast = c.relative_cached(&q, &qd, &mut cache).expect("cached");
+                    let again = c.relative_cached(&q, &qd, &mut cache).expect("hit");
+                    assert_eq!(fast, again);
+                    let slow = RelativeMotion::from_coupled(&c.motion(&q, &qd).expect("motion"));
+                    assert!((fast.rot - slow.rot).amax() < 1e-14);
+                    assert!((fast.pos - slow.pos).amax() < 1e-15);
+                    assert!((fast.bias - slow.bias).amax() < 1e-11 * (1.0 + slow.bias.amax()));
+                    for (a, b) in fast.jacobian.iter().zip(&slow.jacobian) {
+                        assert!((a - b).amax() < 1e-12 * (1.0 + b.amax()));
+                    }
+                    for cached in [cache.as_ref(), None] {
+                        let row = c.spin_row_cached(&q, cached).expect("row");
+                        for (r, col) in row.iter().zip(&slow.jacobian) {
+                            assert!((r - col[2]).abs() < 1e-12 * (1.0 + col[2].abs()));
+                        }
+                    }
                 }
             }
         }
         let c = drive.part(0, AnklePart::Rod).expect("part");
         assert!(c
-            .motion_cached(&[f64::NAN, 0.0], &[0.0; 2], &mut cache)
+            .relative_cached(&[f64::NAN, 0.0], &[0.0; 2], &mut cache)
             .is_err());
+        assert!(c.spin_row_cached(&[0.0], cache.as_ref()).is_err());
     }
 }

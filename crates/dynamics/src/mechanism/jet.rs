@@ -393,19 +393,29 @@ pub fn seed_inputs<const N: usize>(
     q: &[f64],
     qd: &[f64],
 ) -> Result<[SJet<N>; N], MechanismError> {
-    if q.len() != N || qd.len() != N {
+    let (q, qd) = input_arrays::<N>(mechanism, q, qd)?;
+    Ok(std::array::from_fn(|j| SJet::input(j, q[j], qd[j])))
+}
+
+/// Checks `q_in`, `qd_in` (length `N`, finite) and returns them as arrays.
+pub fn input_arrays<const N: usize>(
+    mechanism: &'static str,
+    q: &[f64],
+    qd: &[f64],
+) -> Result<([f64; N], [f64; N]), MechanismError> {
+    let (Ok(qa), Ok(qda)) = (<[f64; N]>::try_from(q), <[f64; N]>::try_from(qd)) else {
         return Err(MechanismError::BadInput {
             mechanism,
             reason: format!("expected {N} inputs, got q {} / qd {}", q.len(), qd.len()),
         });
-    }
-    if q.iter().chain(qd).any(|x| !x.is_finite()) {
+    };
+    if qa.iter().chain(&qda).any(|x| !x.is_finite()) {
         return Err(MechanismError::BadInput {
             mechanism,
             reason: "non-finite input".into(),
         });
     }
-    Ok(std::array::from_fn(|j| SJet::input(j, q[j], qd[j])))
+    Ok((qa, qda))
 }
 
 /// Error for a non-finite or non-positive geometric parameter.

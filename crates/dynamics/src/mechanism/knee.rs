@@ -28,11 +28,17 @@
 //! The housing's body y component of the angular velocity is `d theta / dt`, `theta` the angle
 //! of `r_screw` about `+t_z`; the thesis's `alpha = atan(r_x / r_y)` (3.15) is measured the
 //! other way (`alpha_dot = -theta_dot` for `r_y < 0`), while (3.17) `r x rdot / l^2` is `theta_dot`.
-//! Derivatives are exact, from [`super::jet`]; (3.6)'s numerator is read as
+//! Derivatives are exact: from [`super::jet`] in the reference [`Coupling::motion`], in closed
+//! form (`closure.rs`) in [`KneeCoupling::relative_cached`], [`KneeDrive::transmission`] and
+//! the spin rows (tested equal to round-off); (3.6)'s numerator is read as
 //! `rdot.rdot + r.rddot - ldot^2` (the extracted text drops the square).
 
-use super::jet::{bad_param, seed_inputs, FrameJet, SJet, VJet};
+mod closure;
+
+use super::cache::LoopSlots;
+use super::jet::{bad_param, input_arrays, seed_inputs, FrameJet, SJet, VJet};
 use super::{CoupledMotion, Coupling, MechanismError, RelativeMotion};
+use closure::KneeClosure;
 use nalgebra::{Vector2, Vector3};
 use std::f64::consts::PI;
 use std::ops::Add;
@@ -189,13 +195,13 @@ impl KneeDrive {
 
     /// Nut travel, its first and second derivative and the motor angle, (3.3)-(3.7).
     pub fn transmission(&self, q: f64) -> Result<KneeTransmission, MechanismError> {
-        let [qj] = seed_inputs::<1>(NAME, &[q], &[1.0])?;
-        let l = self.screw_length(&self.screw_vector(qj), q)?;
+        let ([q], _) = input_arrays::<1>(NAME, &[q], &[0.0])?;
+        let c = self.solve(q)?;
         Ok(KneeTransmission {
-            travel: l.v,
-            dtravel: l.d[0],
-            ddtravel: l.acc,
-            motor_angle: self.screw_ratio() * l.v + self.params.motor_offset,
+            travel: c.l,
+            dtravel: c.l_q,
+            ddtravel: c.l_qq,
+            motor_angle: self.screw_ratio() * c.l + self.params.motor_offset,
         })
     }
 
@@ -313,15 +319,11 @@ struct KneeLoop {
     length: SJet<1>,
 }
 
-/// A closed knee loop at given inputs, shared by the three parts (housing, nut, rotor) of one
-/// drive so that (3.4) is solved once per drive, not once per part.
-#[derive(Debug, Clone, Copy)]
-pub struct KneeLoopCache {
-    drive: KneeDrive,
-    q: f64,
-    qd: f64,
-    lp: KneeLoop,
-}
+/// Closed knee loops of the last kinematics pass, keyed by drive and exact knee angle (see
+/// [`super::cache`]): the three parts (housing, nut, rotor) of one drive share one loop
+/// closure (3.4)-(3.7), and [`crate::Data::coupled_spin_row`] reads the motor rows back.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct KneeLoopCache(LoopSlots<(KneeDrive, f64), KneeClosure>);
 
 /// One part of a [`KneeDrive`] as a [`Coupling`] (input: the knee angle).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -353,24 +355,36 @@ impl KneeCoupling {
         qd_in: &[f64],
         cache: &mut Option<KneeLoopCache>,
     ) -> Result<RelativeMotion, MechanismError> {
-        let [q] = seed_inputs::<1>(NAME, q_in, qd_in)?;
-        let hit = cache
-            .as_ref()
-            .filter(|c| c.q == q.v && c.qd == q.vel && c.drive == self.drive);
-        let lp = match hit {
-            Some(c) => c.lp,
+        let ([q], [qd]) = input_arrays::<1>(NAME, q_in, qd_in)?;
+        let slots = &mut cache.get_or_insert_with(KneeLoopCache::default).0;
+        let drive = &self.drive;
+        let closure = match slots.find(|(d, x)| *x == q && d == drive) {
+            Some(c) => *c,
             None => {
-                let lp = self.drive.close_loop(q)?;
-                *cache = Some(KneeLoopCache {
-                    drive: self.drive,
-                    q: q.v,
-                    qd: q.vel,
-                    lp,
-                });
-                lp
+                let c = drive.solve(q)?;
+                slots.store((*drive, q), c);
+                c
             }
         };
-        Ok(self.drive.frame_of(self.part, &lp).relative())
+        Ok(drive.part_motion(self.part, &closure, qd))
+    }
+
+    /// Part-frame z row of this part's relative Jacobian at `q_in` (for the rotor the motor
+    /// row `N_screw dl/dq`, (3.3), (3.5)), from `cache` when it holds this drive closed at
+    /// exactly `q_in`, else from a fresh loop closure.
+    pub fn spin_row_cached(
+        &self,
+        q_in: &[f64],
+        cache: Option<&KneeLoopCache>,
+    ) -> Result<f64, MechanismError> {
+        let ([q], _) = input_arrays::<1>(NAME, q_in, &[0.0])?;
+        let drive = &self.drive;
+        let hit = cache.and_then(|c| c.0.find(|(d, x)| *x == q && d == drive));
+        let c = match hit {
+            Some(c) => *c,
+            None => drive.solve(q)?,
+        };
+        Ok(drive.part_motion(self.part, &c, 0.0).jacobian[0][2])
     }
 }
 
@@ -378,8 +392,9 @@ impl KneeCoupling {
 mod tests {
     use super::*;
 
-    /// The cached evaluation equals the uncached one part by part, across drives (tilt on and
-    /// off: cache misses on a different drive) and inputs (misses on different `q` or `qd`).
+    /// The cached fast path equals the jet reference part by part (to round-off), across drives
+    /// (tilt on and off: misses on a different drive) and inputs; hits are bit-for-bit repeats;
+    /// spin rows equal the reference's z rows with and without the cache.
     #[test]
     fn cached_relative_equals_motion() {
         let tilt = KneeDrive::new(KneeDriveParams::default()).expect("default drive");
@@ -389,17 +404,33 @@ mod tests {
         })
         .expect("fixed-axis drive");
         let mut cache = None;
-        for (q, qd) in [(0.4, 0.3), (0.4, -0.2), (1.1, 0.0)] {
+        for (q, qd) in [(0.4, 0.3), (0.4, -0.2), (1.1, 0.0), (-0.05, 2.0)] {
             for drive in [tilt, fixed] {
                 for part in [KneePart::Housing, KneePart::Nut, KneePart::Rotor] {
                     let c = drive.part(part);
                     let fast = c.relative_cached(&[q], &[qd], &mut cache).expect("cached");
-                    assert_eq!(fast.to_coupled(), c.motion(&[q], &[qd]).expect("motion"));
-                    assert_eq!(cache.as_ref().map(|l| l.drive), Some(drive));
+                    let again = c.relative_cached(&[q], &[qd], &mut cache).expect("hit");
+                    assert_eq!(fast, again);
+                    let slow =
+                        RelativeMotion::from_coupled(&c.motion(&[q], &[qd]).expect("motion"));
+                    assert!((fast.rot - slow.rot).amax() < 1e-14);
+                    assert!((fast.pos - slow.pos).amax() < 1e-15);
+                    let tol = 1e-12 * (1.0 + slow.bias.amax());
+                    assert!(
+                        (fast.bias - slow.bias).amax() < tol,
+                        "{part:?} {fast:?} {slow:?}"
+                    );
+                    let (a, b) = (fast.jacobian[0], slow.jacobian[0]);
+                    assert!((a - b).amax() < 1e-12 * (1.0 + b.amax()), "{part:?}");
+                    for cached in [cache.as_ref(), None] {
+                        let row = c.spin_row_cached(&[q], cached).expect("row");
+                        assert!((row - b[2]).abs() < 1e-12 * (1.0 + b[2].abs()));
+                    }
                 }
             }
         }
         let c = tilt.part(KneePart::Nut);
         assert!(c.relative_cached(&[f64::NAN], &[0.0], &mut cache).is_err());
+        assert!(c.spin_row_cached(&[0.1, 0.2], cache.as_ref()).is_err());
     }
 }

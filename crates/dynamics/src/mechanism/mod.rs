@@ -17,9 +17,11 @@
 //! differences of `pose` and `J` along `q_in + qd_in t`.
 
 pub mod ankle;
+pub mod cache;
 pub mod harmonic_drive;
 pub mod jet;
 pub mod knee;
+pub mod rows;
 pub mod vergence;
 
 use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3, Vector6};

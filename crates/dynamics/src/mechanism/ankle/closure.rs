@@ -1,0 +1,179 @@
+//! Closed-form slider-crank loop (3.23)-(3.33) and part motions (3.30)-(3.37) written out
+//! by hand: the fast path of the kinematics. The jet evaluation of the parent module
+//! ([`super::AnkleCoupling`]'s [`crate::mechanism::Coupling::motion`]) is the reference it is
+//! tested against; both give the same values up to round-off.
+//!
+//! Foot ball `F = C + A_y(q_0) A_x(q_1) f`: with `rho = F - C`, the partials are
+//! `F_0 = e_y x rho`, `F_1 = a_1 x rho` (`a_1 = A_y(q_0) e_x`), the velocity `omega x rho`
+//! (`omega = e_y qd_0 + a_1 qd_1`) and the zero-`qdd` acceleration
+//! `omegadot x rho + omega x Fdot`, `omegadot = qd_0 qd_1 e_y x a_1`. The loop (3.29):
+//! `l = e.r - d`, `d^2 = L^2 - r.r + (e.r)^2`, `r = F - T`, differentiated once per input
+//! (3.32) and twice in time (3.33).
+
+use super::{AnklePart, SliderCrank, NAME};
+use crate::mechanism::{MechanismError, RelativeMotion, MAX_COUPLED};
+use nalgebra::{Matrix3, Vector3, Vector6};
+
+/// One slider-crank loop closed at `(q, qd)`: nut travel and foot ball with their partials,
+/// velocity and zero-`qdd` acceleration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Closure {
+    /// `(sin q_0, cos q_0, sin q_1, cos q_1)`, reusable by the other actuator of the ankle.
+    pub trig: [f64; 4],
+    /// Nut travel `l` (3.29).
+    pub l: f64,
+    /// `dl/dq_j` (3.32).
+    pub l_q: [f64; 2],
+    /// `ldot`.
+    pub l_dot: f64,
+    /// `lddot` at `qdd = 0` (3.33).
+    pub l_acc: f64,
+    /// Foot ball centre `F` (shank frame).
+    pub foot: Vector3<f64>,
+    /// `dF/dq_j`.
+    pub foot_q: [Vector3<f64>; 2],
+    /// `Fdot`.
+    pub foot_dot: Vector3<f64>,
+    /// `Fddot` at `qdd = 0`.
+    pub foot_acc: Vector3<f64>,
+}
+
+/// `(sin q_0, cos q_0, sin q_1, cos q_1)`.
+pub(crate) fn trig(q: [f64; 2]) -> [f64; 4] {
+    let (s0, c0) = q[0].sin_cos();
+    let (s1, c1) = q[1].sin_cos();
+    [s0, c0, s1, c1]
+}
+
+/// `e_y x v`.
+#[inline]
+fn ey_cross(v: &Vector3<f64>) -> Vector3<f64> {
+    Vector3::new(v.z, 0.0, -v.x)
+}
+
+impl SliderCrank {
+    /// Closes the loop at `q` (angles given by `trig = trig(q)`) moving with `qd`.
+    pub(crate) fn solve(
+        &self,
+        q: [f64; 2],
+        trig: [f64; 4],
+        qd: [f64; 2],
+    ) -> Result<Closure, MechanismError> {
+        let [s0, c0, s1, c1] = trig;
+        let a = &self.act;
+        let (e, f, [w0, w1]) = (&a.screw_axis, &a.foot_ball, qd);
+        let g = Vector3::new(f.x, c1 * f.y - s1 * f.z, s1 * f.y + c1 * f.z);
+        let rho = Vector3::new(c0 * g.x + s0 * g.z, g.y, c0 * g.z - s0 * g.x);
+        let a1 = Vector3::new(c0, 0.0, -s0);
+        let foot_q = [ey_cross(&rho), a1.cross(&rho)];
+        let foot_dot = foot_q[0] * w0 + foot_q[1] * w1;
+        let omega = Vector3::new(a1.x * w1, w0, a1.z * w1);
+        let omega_dot = Vector3::new(-s0, 0.0, -c0) * (w0 * w1);
+        let foot_acc = omega_dot.cross(&rho) + omega.cross(&foot_dot);
+        let foot = self.center + rho;
+        let r = foot - a.screw_top;
+        let er = e.dot(&r);
+        let d2 = a.rod_length * a.rod_length - r.norm_squared() + er * er;
+        if d2.is_nan() || d2 <= 0.0 {
+            return Err(MechanismError::OutOfRange {
+                mechanism: NAME,
+                input: q.to_vec(),
+                reason: "no real root of (3.25): d^2 <= 0 in (3.29)",
+            });
+        }
+        let d = d2.sqrt();
+        let travel_rate = |v: &Vector3<f64>| {
+            let ev = e.dot(v);
+            (ev, ev - (er * ev - r.dot(v)) / d)
+        };
+        let l_q = [travel_rate(&foot_q[0]).1, travel_rate(&foot_q[1]).1];
+        let (erd, l_dot) = travel_rate(&foot_dot);
+        let d_dot = erd - l_dot;
+        let era = e.dot(&foot_acc);
+        let d_acc =
+            (erd * erd + er * era - foot_dot.norm_squared() - r.dot(&foot_acc) - d_dot * d_dot) / d;
+        Ok(Closure {
+            trig,
+            l: er - d,
+            l_q,
+            l_dot,
+            l_acc: era - d_acc,
+            foot,
+            foot_q,
+            foot_dot,
+            foot_acc,
+        })
+    }
+
+    /// Pose, Jacobian and bias of one part from the closed loop `c` (3.30)-(3.37).
+    pub(crate) fn part_motion(&self, part: AnklePart, c: &Closure) -> RelativeMotion {
+        let a = &self.act;
+        let mut m = RelativeMotion {
+            rot: self.frame,
+            pos: a.screw_top + a.screw_axis * c.l,
+            jacobian: [Vector6::zeros(); MAX_COUPLED],
+            bias: Vector6::zeros(),
+        };
+        match part {
+            AnklePart::Nut => {
+                for (col, lq) in m.jacobian.iter_mut().zip(c.l_q) {
+                    col[5] = lq;
+                }
+                m.bias[5] = c.l_acc;
+            }
+            AnklePart::Rotor => {
+                let (s, co) = (self.ratio * c.l + a.motor_offset).sin_cos();
+                let (x, y) = (self.frame.column(0), self.frame.column(1));
+                m.rot = Matrix3::from_columns(&[
+                    x * co + y * s,
+                    y * co - x * s,
+                    self.frame.column(2).into(),
+                ]);
+                m.pos = a.screw_top;
+                for (col, lq) in m.jacobian.iter_mut().zip(c.l_q) {
+                    col[2] = self.ratio * lq;
+                }
+                m.bias[2] = self.ratio * c.l_acc;
+            }
+            AnklePart::Rod => self.rod_motion(c, &mut m),
+        }
+        m
+    }
+
+    /// The coupler rod (origin at the nut ball `m.pos`, z along `u = (F - N) / L`,
+    /// `x = normalize(e_y x u)`): body angular velocity `(-y.udot, x.udot, (e_y x udot).y / n)`
+    /// with `n = |e_y x u|`, linear velocity `(x, y, z) . e ldot`, and their component-wise
+    /// time derivatives at `qdd = 0`.
+    fn rod_motion(&self, c: &Closure, m: &mut RelativeMotion) {
+        let e = &self.act.screw_axis;
+        let inv = 1.0 / self.act.rod_length;
+        let u = (c.foot - m.pos) * inv;
+        let u_dot = (c.foot_dot - e * c.l_dot) * inv;
+        let u_acc = (c.foot_acc - e * c.l_acc) * inv;
+        let w = ey_cross(&u);
+        let n = w.norm();
+        let x = w / n;
+        let y = u.cross(&x);
+        let omega = |v: &Vector3<f64>| Vector3::new(-y.dot(v), x.dot(v), ey_cross(v).dot(&y) / n);
+        let lin = Vector3::new(x.dot(e), y.dot(e), u.dot(e));
+        for (j, col) in m.jacobian.iter_mut().take(2).enumerate() {
+            let u_q = (c.foot_q[j] - e * c.l_q[j]) * inv;
+            col.fixed_rows_mut::<3>(0).copy_from(&omega(&u_q));
+            col.fixed_rows_mut::<3>(3).copy_from(&(lin * c.l_q[j]));
+        }
+        let om = omega(&u_dot);
+        let x_dot = y * om.z - u * om.y;
+        let y_dot = u * om.x - x * om.z;
+        let n_dot = x.dot(&ey_cross(&u_dot));
+        let ang = Vector3::new(
+            -y_dot.dot(&u_dot) - y.dot(&u_acc),
+            x_dot.dot(&u_dot) + x.dot(&u_acc),
+            (ey_cross(&u_acc).dot(&y) + ey_cross(&u_dot).dot(&y_dot) - om.z * n_dot) / n,
+        );
+        let lin_bias =
+            Vector3::new(x_dot.dot(e), y_dot.dot(e), u_dot.dot(e)) * c.l_dot + lin * c.l_acc;
+        m.rot = Matrix3::from_columns(&[x, y, u]);
+        m.bias.fixed_rows_mut::<3>(0).copy_from(&ang);
+        m.bias.fixed_rows_mut::<3>(3).copy_from(&lin_bias);
+    }
+}
