@@ -96,6 +96,11 @@ pub struct Data {
     /// True while the kinematics of [`crate::forward_dynamics_kinematics`] are current (set by
     /// it, cleared by every other kinematics pass): [`crate::forward_dynamics_solve`] needs it.
     pub(crate) fd_kinematics: bool,
+    /// `q` and `v` of the last [`crate::forward_dynamics_kinematics`], to complete the skipped
+    /// kinematics of spin-invariant rotors when an algorithm needs them.
+    pub(crate) fd_q: DVector<f64>,
+    /// See [`Data::fd_q`].
+    pub(crate) fd_v: DVector<f64>,
     /// Generalized accelerations (output of forward dynamics).
     pub ddq: DVector<f64>,
     /// Generalized forces (output of inverse dynamics).
@@ -198,6 +203,8 @@ impl Data {
             knee_loop: None,
             mechanism_fault: None,
             fd_kinematics: false,
+            fd_q: DVector::zeros(model.nq()),
+            fd_v: DVector::zeros(nv),
             ddq: DVector::zeros(nv),
             tau: DVector::zeros(nv),
             mass: DMatrix::zeros(nv, nv),

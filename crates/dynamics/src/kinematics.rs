@@ -264,8 +264,7 @@ fn rotor_kinematics(
     q: &DVector<f64>,
     v: Option<&DVector<f64>>,
 ) -> (SpatialTransform, Motion, Motion) {
-    let angle = rotor.rotor_angle(q[body.q_set.as_slice()[0]]);
-    if !angle.is_finite() {
+    let Some(x) = rotor_transform(rotor, &data.rotor_frame[i], q[body.q_set.as_slice()[0]]) else {
         data.mechanism_fault = Some((
             i,
             MechanismError::BadInput {
@@ -274,10 +273,7 @@ fn rotor_kinematics(
             },
         ));
         return (body.placement_x, Motion::zero(), Motion::zero());
-    }
-    let (s, c) = angle.sin_cos();
-    let frame = &data.rotor_frame[i];
-    let x = SpatialTransform::new(Axis::Z.rot_tr_mul(s, c, &frame.rot), frame.trans);
+    };
     let qd = v.map_or(0.0, |v| v[body.v_set.as_slice()[0]]);
     let rel = Motion::new(
         Vector3::new(0.0, 0.0, rotor.params().ratio * qd),
@@ -381,16 +377,55 @@ pub(crate) fn first_forward(
 }
 
 /// Kinematic half of the first forward recursion (Algorithm 2.2 without body forces): `C_i`,
-/// world poses, `g_i`, `v_i`, `b_i` and the mechanism loop caches of all bodies.
+/// world poses, `g_i`, `v_i`, `b_i` and the mechanism loop caches of all bodies except the
+/// spin-invariant Harmonic Drive rotors (see [`crate::subsystem::rotor`]), whose kinematics
+/// the O(n) solve does not need; [`complete_rotor_kinematics`] adds them from the stored `q, v`.
 pub(crate) fn first_forward_kinematics(
     model: &Model,
     data: &mut Data,
     q: &DVector<f64>,
     v: &DVector<f64>,
 ) {
+    data.fd_q.copy_from(q);
+    data.fd_v.copy_from(v);
     for i in 0..model.nbodies() {
-        body_kinematics(model, data, i, q, Some(v));
+        if data.rotor_constant[i].is_none() {
+            body_kinematics(model, data, i, q, Some(v));
+        }
     }
+}
+
+/// Kinematics of the rotors skipped by [`first_forward_kinematics`], from its stored `q, v`.
+pub(crate) fn complete_rotor_kinematics(model: &Model, data: &mut Data) {
+    let (q, v) = (
+        std::mem::take(&mut data.fd_q),
+        std::mem::take(&mut data.fd_v),
+    );
+    for i in 0..model.nbodies() {
+        if data.rotor_constant[i].is_some() {
+            body_kinematics(model, data, i, &q, Some(&v));
+        }
+    }
+    (data.fd_q, data.fd_v) = (q, v);
+}
+
+/// Transform `C` of a Harmonic Drive rotor at angle `N q + offset` about the z axis of its
+/// constant frame `frame` (3.1)-(3.2); `None` for a non-finite angle.
+#[inline]
+pub(crate) fn rotor_transform(
+    rotor: &HarmonicDriveRotor,
+    frame: &SpatialTransform,
+    q: f64,
+) -> Option<SpatialTransform> {
+    let angle = rotor.rotor_angle(q);
+    if !angle.is_finite() {
+        return None;
+    }
+    let (s, c) = angle.sin_cos();
+    Some(SpatialTransform::new(
+        Axis::Z.rot_tr_mul(s, c, &frame.rot),
+        frame.trans,
+    ))
 }
 
 /// Body forces `f_i` (2.56) of all bodies from the kinematics already in `data`.

@@ -7,7 +7,8 @@ mod solve;
 
 use crate::check;
 use crate::kinematics::{
-    body_forces, body_kinematics, first_forward, first_forward_kinematics, take_fault,
+    body_forces, body_kinematics, complete_rotor_kinematics, first_forward,
+    first_forward_kinematics, take_fault,
 };
 use crate::spatial::Wrench;
 use crate::{Data, DynamicsError, Model};
@@ -44,10 +45,11 @@ pub fn forward_dynamics<'d>(
 /// First phase of forward dynamics: the kinematic part of the first forward recursion
 /// (Algorithm 2.2, (2.33)-(2.37)) for `(q, v)`.
 ///
-/// Valid in `data` after it returns: `x[i]` (`C_i`), `vel[i]`, `bias_acc[i]`, `gravity_body[i]`
-/// and the mechanisms' loop caches of every body, and `world_rot[i]` / `world_pos[i]` of every
-/// body that is not a Harmonic Drive rotor (rotor world poses may be stale; no FD output needs
-/// them). Forces, torques and external wrenches can then be computed from these kinematics
+/// Valid in `data` after it returns, for every body except the Harmonic Drive rotors: `x[i]`
+/// (`C_i`), `world_rot[i]` / `world_pos[i]`, `vel[i]`, `bias_acc[i]`, `gravity_body[i]`, and
+/// the mechanisms' loop caches. The kinematics of rotors whose inertia is axisymmetric about
+/// their spin axis are skipped (the O(n) solve works with their constant parent-frame
+/// inertia, [`crate::subsystem::rotor`]): use [`crate::forward_kinematics`] for those. Forces, torques and external wrenches can then be computed from these kinematics
 /// (e.g. contact at the feet, drive torques) and passed to [`forward_dynamics_solve`].
 pub fn forward_dynamics_kinematics(
     model: &Model,
@@ -87,6 +89,7 @@ pub fn forward_dynamics_solve<'d>(
     if algo == Algorithm::On {
         return on::solve(model, data, tau, fext);
     }
+    complete_rotor_kinematics(model, data);
     body_forces(model, data, fext);
     rnea::rnea_from_kinematics(model, data, None, true);
     crba::crba(model, data);

@@ -14,12 +14,15 @@
 
 use super::solve::check_pivot;
 use crate::check;
-use crate::kinematics::{body_force, six};
+use crate::kinematics::{body_force, rotor_transform, six};
+use crate::model::coupling::Mechanism;
 use crate::model::joint::Joint;
+use crate::model::JointModel;
 use crate::spatial::{ArticulatedInertia, Force, Motion, Wrench};
+use crate::subsystem::rotor::{parent_frame_bias, RotorConstant};
 use crate::subsystem::{self, NodeKind};
 use crate::{Data, DynamicsError, Model};
-use nalgebra::{DVector, Matrix6};
+use nalgebra::{DVector, Matrix6, Vector3};
 
 /// First forward recursion (Algorithm 2.2 with step 2 of Algorithm 2.1): kinematics, body
 /// forces `f_i` (gravity, external wrenches, inertial forces) and `M-bar_i = M_i`, `f-bar_i = f_i`.
@@ -32,14 +35,23 @@ pub fn forward_pass_1(
 ) -> Result<(), DynamicsError> {
     super::forward_dynamics_kinematics(model, data, q, v)?;
     check::wrenches(model, fext)?;
-    dynamic_first_pass(model, data, fext);
-    Ok(())
+    dynamic_first_pass(model, data, fext)
 }
 
 /// Dynamic half of the first pass after [`super::forward_dynamics_kinematics`]: body forces
-/// `f_i` (2.56), `M-bar_i = M_i`, `f-bar_i = f_i` and the sub-system member kinematics.
-fn dynamic_first_pass(model: &Model, data: &mut Data, fext: Option<&[Wrench]>) {
+/// `f_i` (2.56), `M-bar_i = M_i`, `f-bar_i = f_i` and the sub-system member kinematics; for a
+/// spin-invariant rotor `f-bar` holds its parent-frame `C^T (M b - f)` instead
+/// ([`crate::subsystem::rotor::parent_frame_bias`]).
+fn dynamic_first_pass(
+    model: &Model,
+    data: &mut Data,
+    fext: Option<&[Wrench]>,
+) -> Result<(), DynamicsError> {
     for (i, body) in model.bodies.iter().enumerate() {
+        if let Some(rc) = &data.rotor_constant[i] {
+            data.fbar[i] = rotor_bias(model, data, i, rc, fext)?;
+            continue;
+        }
         body_force(model, data, i, fext);
         if data.mbar_needed[i] {
             data.mbar[i] = body.inertia.to_articulated();
@@ -49,6 +61,42 @@ fn dynamic_first_pass(model: &Model, data: &mut Data, fext: Option<&[Wrench]>) {
     for s in 0..model.subsystems.len() {
         subsystem::on::hat_kinematics(model, data, s);
     }
+    Ok(())
+}
+
+/// `C^T (M b - f)` of spin-invariant rotor `i` in its parent's frame, including its external
+/// wrench (given in the spun rotor frame, so only then is the spin angle evaluated).
+#[inline]
+fn rotor_bias(
+    model: &Model,
+    data: &Data,
+    i: usize,
+    rc: &RotorConstant,
+    fext: Option<&[Wrench]>,
+) -> Result<Force, DynamicsError> {
+    let body = &model.bodies[i];
+    let (w, g) = match body.parent {
+        Some(p) => (data.vel[p].ang, data.gravity_body[p]),
+        None => (Vector3::zeros(), model.gravity),
+    };
+    let mut h = parent_frame_bias(rc, &w, &g, data.fd_v[rc.v_index]);
+    let Some(f) = fext.map(|f| f[i]).filter(|f| *f != Wrench::zero()) else {
+        return Ok(h);
+    };
+    let x = match &body.joint_model {
+        JointModel::Coupled {
+            mechanism: Mechanism::HarmonicDrive(rotor),
+            ..
+        } => rotor_transform(rotor, &data.rotor_frame[i], data.fd_q[body.q_index]),
+        _ => None,
+    };
+    let Some(x) = x else {
+        return Err(DynamicsError::Unsupported(
+            "external wrench on a rotor with a non-finite spin angle",
+        ));
+    };
+    h -= x.tr_apply_force(&f);
+    Ok(h)
 }
 
 /// Body forces and the backward and second forward passes (Algorithms 2.1-2.4 after the
@@ -59,7 +107,7 @@ pub(crate) fn solve<'d>(
     tau: &DVector<f64>,
     fext: Option<&[Wrench]>,
 ) -> Result<&'d DVector<f64>, DynamicsError> {
-    dynamic_first_pass(model, data, fext);
+    dynamic_first_pass(model, data, fext)?;
     backward_pass(model, data, tau)?;
     Ok(forward_pass_2(model, data))
 }

@@ -56,6 +56,9 @@ fn hat_kinematics_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
     let sub = &model.subsystems[s];
     let n = dof::<N>(model, s);
     for (m, &j) in sub.members.iter().enumerate() {
+        if data.rotor_constant[j].is_some() {
+            continue; // Spin-invariant rotor: works in the parent frame, no member kinematics.
+        }
         let body = &model.bodies[j];
         let x = data.x[j];
         let mut cols = [Motion::zero(); N];
@@ -113,6 +116,17 @@ fn backward_n<const N: usize>(
     let mut kc = ArticulatedInertia::zero();
     let mut fc = Force::zero();
     for (mi, &j) in sub.members.iter().enumerate() {
+        if let Some(rc) = &data.rotor_constant[j] {
+            // Spin-invariant rotor: constant B_S row and M_S diagonal entry, one column only,
+            // its C^T (M b - f) already in the parent frame (in `fbar`).
+            let (c, h) = (rc.column, data.fbar[j]);
+            ms[c][c] += rc.sks;
+            bs[c] += rc.ks;
+            rhs[c] -= rc.s.dot(&h);
+            kc += rc.congruence;
+            fc += h;
+            continue;
+        }
         let m = &data.mbar[j];
         // A rigid member's M-hat is its rigid-body inertia: apply it in the compact form (2.22).
         let (rigid, inertia) = (sub.rigid_member[mi], &model.bodies[j].inertia);
@@ -125,16 +139,6 @@ fn backward_n<const N: usize>(
         };
         let (cj, jj) = (&data.cbar[j], &data.jbar[j]);
         let hat_f = apply(&data.bbar[j]) - data.fbar[j];
-        if let Some(rc) = &data.rotor_constant[j] {
-            // Spin-invariant rotor: constant B_S row and M_S diagonal entry, one column only.
-            let c = rc.column;
-            ms[c][c] += rc.sks;
-            bs[c] += rc.ks;
-            rhs[c] -= jj[c].dot(&hat_f);
-            kc += rc.congruence;
-            fc += cj.tr_apply_force(&hat_f);
-            continue;
-        }
         for c in 0..n {
             let mj = apply(&jj[c]);
             for r in c..n {

@@ -7,14 +7,23 @@
 //! So are its contributions to `B_S` and `M_S`: with the rotor column `J = [0, 0, N, 0, 0, 0]`
 //! (3.1) and its parent-frame image `s = C^-1 J` (the spin axis, constant), `C^T M J = K s` and
 //! `J^T M J = s^T K s`.
+//!
+//! Such a rotor's CoM is fixed in the parent frame and its inertia there is constant, so the
+//! O(n) forward dynamics need no rotor kinematics at all (no spin angle, no rotor pose): its
+//! velocity-product and gravity force `C^T (M b - f)` is formed in the parent frame from the
+//! parent's angular velocity and gravity ([`parent_frame_bias`]). The kinematics of these
+//! rotors are therefore skipped by [`crate::forward_dynamics_kinematics`] and completed only
+//! where another algorithm needs them.
 
 use super::on::add_rigid_congruence;
 use crate::mechanism::harmonic_drive::HarmonicDriveRotor;
 use crate::model::coupling::Mechanism;
 use crate::model::JointModel;
-use crate::spatial::{ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform};
+use crate::spatial::{
+    sym_congruence, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform,
+};
 use crate::Model;
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 /// Spin-invariant quantities of one rotor member of a sub-system (see the module doc).
 #[derive(Clone, Copy, Debug)]
@@ -27,6 +36,37 @@ pub(crate) struct RotorConstant {
     pub(crate) ks: Force,
     /// `J^T M J = s^T K s`, the rotor's contribution to the diagonal of `M_S`.
     pub(crate) sks: f64,
+    /// `s = C^-1 J`: the rotor column in the parent frame (`s.ang = N` times the spin axis).
+    pub(crate) s: Motion,
+    /// Rotor mass `m`.
+    pub(crate) mass: f64,
+    /// Rotor CoM in parent coordinates (on the spin axis, so constant).
+    pub(crate) com: Vector3<f64>,
+    /// Rotational inertia about the CoM in parent axes (constant by axisymmetry).
+    pub(crate) inertia_com: Matrix3<f64>,
+    /// Velocity index of the driving coordinate.
+    pub(crate) v_index: usize,
+}
+
+/// `C^T (M b - f_g + h)` of a spin-invariant rotor in its parent's frame (moment about the
+/// parent origin): the wrench that gives the rotor its motion at zero parent acceleration and
+/// zero `qddot` against gravity, (2.56) with (2.37) moved to the parent. With the parent's
+/// angular velocity `w_p` and gravity `g_p` (parent axes) and the rotor rate
+/// `w_R = w_p + s.ang qd`: the CoM `c` is fixed in the parent, so `F = m (w_p x (w_p x c) - g_p)`;
+/// the inertia `I_c` is constant in parent axes, so `dL/dt = w_p x (I_c w_R)` (the
+/// `I_c (w_p x s qd)` terms of the rotor's angular acceleration and of the rotating
+/// tensor cancel); the moment about the parent origin adds `c x F`.
+#[inline]
+pub(crate) fn parent_frame_bias(
+    rc: &RotorConstant,
+    w_p: &Vector3<f64>,
+    g_p: &Vector3<f64>,
+    qd: f64,
+) -> Force {
+    let w = w_p + rc.s.ang * qd;
+    let f = (w_p.cross(&w_p.cross(&rc.com)) - g_p) * rc.mass;
+    let n = w_p.cross(&(rc.inertia_com * w)) + rc.com.cross(&f);
+    Force::new(n, f)
 }
 
 /// Per body: the constants of a spin-invariant rotor member (see the module doc), `None` for
@@ -46,17 +86,25 @@ pub(crate) fn constant_congruences(
             else {
                 continue;
             };
-            if !(sub.rigid_member[mi] && body.parent == sub.parent && body.v_set.len() == 1) {
+            let leaf = model.bodies.iter().all(|b| b.parent != Some(j));
+            if !(leaf && sub.rigid_member[mi] && body.parent == sub.parent && body.v_set.len() == 1)
+            {
                 continue;
             }
             out[j] = spin_invariant(&body.inertia, &frames[j]).map(|congruence| {
                 let s = frames[j].inv_apply_motion(&rotor_column(rotor));
                 let ks = congruence.apply(&s);
+                let frame = &frames[j];
                 RotorConstant {
                     congruence,
                     column: sub.columns[mi][0],
                     ks,
                     sks: s.dot(&ks),
+                    s,
+                    mass: body.inertia.mass(),
+                    com: frame.rot.tr_mul(&body.inertia.com()) + frame.trans,
+                    inertia_com: sym_congruence(&body.inertia.inertia_about_com(), &frame.rot),
+                    v_index: body.v_set.as_slice()[0],
                 }
             });
         }
