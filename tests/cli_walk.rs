@@ -127,3 +127,35 @@ fn dynamic_walk_writes_csv_plots_and_summary_entry() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn open_loop_dynamic_walk_falls_with_one_line_error() {
+    let dir = std::env::temp_dir().join(format!("biped_walk_fall_{}", std::process::id()));
+    let out = biped()
+        .args([
+            "walk",
+            "--steps",
+            "4",
+            "--method",
+            "none",
+            "--dynamic",
+            "--open-loop",
+        ])
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    // stderr also carries the kinematic walk's progress line; the error is one line
+    let errors: Vec<&str> = err.lines().filter(|l| l.starts_with("error")).collect();
+    assert_eq!(errors.len(), 1, "{err}");
+    assert!(errors[0].contains("fell"), "{err}");
+    assert_eq!(err.trim().lines().last(), Some(errors[0]));
+    let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(v["dynamic"]["walked"], serde_json::Value::Bool(false));
+    assert!(v["dynamic"]["fell_at"].as_f64().is_some());
+    assert!(dir.join("dynamic.csv").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}

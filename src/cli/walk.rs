@@ -35,6 +35,10 @@ pub struct WalkArgs {
     /// simulation; fails if the robot falls.
     #[arg(long)]
     dynamic: bool,
+    /// With --dynamic: track the LIPM pattern as planned, without the multibody ZMP correction
+    /// and the ankle stabiliser (for comparison; the default walk falls).
+    #[arg(long, requires = "dynamic")]
+    open_loop: bool,
     /// Output directory.
     #[arg(long, default_value = "out/walk")]
     out: PathBuf,
@@ -115,6 +119,15 @@ fn dynamic_walk(
         step_time: args.step_time,
         method,
         ..DynamicWalkParams::default()
+    };
+    let p = if args.open_loop {
+        DynamicWalkParams {
+            zmp_iterations: 0,
+            stabiliser: None,
+            ..p
+        }
+    } else {
+        p
     };
     let run = run_dynamic_walk(&p)?;
     let s = &run.summary;
