@@ -78,17 +78,19 @@ impl ContactSet {
         let (p, foot) = (&self.params, &self.feet[k]);
         let (mut force, mut moment) = (Vector3::zeros(), Vector3::zeros());
         let (mut fn_sum, mut cop, mut in_contact) = (0.0, Vector3::zeros(), 0);
-        for (j, c) in foot.spec.points.iter().enumerate() {
-            let idx = foot.first + j;
+        let range = foot.first..foot.first + foot.spec.points.len();
+        let states = s[2 * range.start..2 * range.end].chunks_exact(2);
+        let rates = sdot[2 * range.start..2 * range.end].chunks_exact_mut(2);
+        let forces = out.point_forces[range].iter_mut();
+        for (((c, sj), rate_j), f_j) in foot.spec.points.iter().zip(states).zip(rates).zip(forces) {
             let r = st.rot * c;
             let (pos, vel) = (st.pos + r, st.vel + st.omega.cross(&r));
             let f_n = p.normal_force(p.ground_height - pos.z, -vel.z);
-            let sj = Vector2::new(s[2 * idx], s[2 * idx + 1]);
-            let (f_t, rate) = p.tangential(sj, Vector2::new(vel.x, vel.y), f_n);
-            sdot[2 * idx] = rate.x;
-            sdot[2 * idx + 1] = rate.y;
+            let (f_t, rate) =
+                p.tangential(Vector2::new(sj[0], sj[1]), Vector2::new(vel.x, vel.y), f_n);
+            rate_j.copy_from_slice(rate.as_slice());
             let f = Vector3::new(f_t.x, f_t.y, f_n);
-            out.point_forces[idx] = f;
+            *f_j = f;
             if f_n > 0.0 {
                 in_contact += 1;
                 fn_sum += f_n;

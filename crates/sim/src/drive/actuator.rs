@@ -4,7 +4,7 @@ use super::{DriveMode, FrictionParams, MotorParams};
 use crate::error::SimError;
 use biped_dynamics::mechanism::{Coupling, MAX_COUPLED};
 use biped_dynamics::model::Mechanism;
-use biped_dynamics::{BodyId, JointModel, Model};
+use biped_dynamics::{BodyId, Data, JointModel, Model};
 use serde::Serialize;
 
 /// How the motor is connected to the generalized coordinates.
@@ -62,14 +62,21 @@ impl MotorRow {
     /// Motor speed `n v`.
     #[inline]
     pub fn rate(&self, v: &[f64]) -> f64 {
-        (0..self.len).map(|k| self.coef[k] * v[self.idx[k]]).sum()
+        let n = self.len.min(MAX_COUPLED);
+        self.idx[..n]
+            .iter()
+            .zip(&self.coef[..n])
+            .map(|(&i, c)| c * v[i])
+            .sum()
     }
 
     /// Adds `n^T tau` to the generalized forces.
+    #[allow(clippy::too_many_arguments)]
     #[inline]
     pub fn apply(&self, tau: f64, gen: &mut [f64]) {
-        for k in 0..self.len {
-            gen[self.idx[k]] += self.coef[k] * tau;
+        let n = self.len.min(MAX_COUPLED);
+        for (&i, c) in self.idx[..n].iter().zip(&self.coef[..n]) {
+            gen[i] += c * tau;
         }
     }
 
@@ -189,9 +196,30 @@ impl Actuator {
         })
     }
 
+    /// Motor-rate row at `q` from the mechanism loops that `data`'s last kinematics pass
+    /// closed (e.g. `forward_dynamics_kinematics` at the same `q`): rotor rows by
+    /// [`Data::coupled_spin_row`] (a cache lookup instead of a loop closure, always correct
+    /// for `q`), the other transmissions as [`Self::motor_row`].
+    pub fn motor_row_cached(
+        &self,
+        model: &Model,
+        data: &Data,
+        q: &[f64],
+    ) -> Result<Option<MotorRow>, SimError> {
+        match self.transmission {
+            Transmission::Rotor { body, v_in, n, .. } => Ok(Some(MotorRow {
+                idx: v_in,
+                coef: data.coupled_spin_row(model, body, q)?,
+                len: n,
+            })),
+            _ => self.motor_row(model, q),
+        }
+    }
+
     /// Adds this actuator's generalized forces to `gen` for the command `cmd` (interpreted by
     /// `mode`) and the current state `i` (voltage mode), returns the motor-side state.
     #[allow(clippy::too_many_arguments)]
+    #[inline]
     pub fn apply(
         &self,
         row: Option<&MotorRow>,

@@ -2,7 +2,8 @@
 //!
 //! Right-hand side: [`biped_dynamics::forward_dynamics_kinematics`] (first forward recursion:
 //! body poses, velocities, mechanism loops), then contact forces from the foot poses and
-//! velocities of that pass, drive and gear torques, then
+//! velocities of that pass, drive and gear torques (roller-screw motor rows read from the
+//! loops that pass closed, [`crate::drive::Actuator::motor_row_cached`]), then
 //! [`biped_dynamics::forward_dynamics_solve`]. So one evaluation runs one kinematics pass.
 //!
 //! [`Plant::outputs`] (contact and drive outputs without a dynamics call) takes the general
@@ -40,12 +41,13 @@ impl Plant {
         let (s, sdot) = (&z[l.contact()], &mut zdot[l.contact()]);
         let out = &mut self.out.contact;
         self.contact.evaluate(q, v, s, sdot, &mut self.fext, out);
-        self.drive_forces(z, zdot)
+        self.drive_forces(z, zdot, false)
     }
 
-    /// Drive torques of every actuator (motor rows of roller-screw rotors refreshed at `q`)
-    /// and elastic gear torques into `tau`; current rates into `zdot` in voltage mode.
-    fn drive_forces(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
+    /// Drive torques of every actuator and elastic gear torques into `tau`; current rates into
+    /// `zdot` in voltage mode. Motor rows of roller-screw rotors are refreshed at `q`, from the
+    /// loops of the last kinematics pass in `data` if `cached` (which must be at this `q`).
+    fn drive_forces(&mut self, z: &[f64], zdot: &mut [f64], cached: bool) -> Result<(), SimError> {
         let l = self.layout;
         let (q, v) = (self.q.as_slice(), self.v.as_slice());
         self.tau.fill(0.0);
@@ -55,7 +57,10 @@ impl Plant {
         let currents = l.currents().start;
         for (k, a) in self.actuators.iter().enumerate() {
             if a.row_varies() {
-                self.rows[k] = a.motor_row(&self.model, q)?;
+                self.rows[k] = match cached {
+                    true => a.motor_row_cached(&self.model, &self.data, q)?,
+                    false => a.motor_row(&self.model, q)?,
+                };
             }
             let i = if voltage { z[currents + k] } else { 0.0 };
             let ds = a.apply(self.rows[k].as_ref(), mode, self.commands[k], i, v, tau);
@@ -84,7 +89,7 @@ impl Plant {
         let out = &mut self.out.contact;
         self.contact
             .evaluate_from(&self.data, s, sdot, &mut self.fext, out);
-        self.drive_forces(z, zdot)?;
+        self.drive_forces(z, zdot, true)?;
         let (m, algo) = (&self.model, self.config.algorithm);
         let ddq = forward_dynamics_solve(m, &mut self.data, &self.tau, Some(&self.fext), algo)?;
         finite("qddot", ddq.as_slice())?;

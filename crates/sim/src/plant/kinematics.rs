@@ -7,8 +7,9 @@ use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 /// Index map from `v` to `qdot`, built once.
 #[derive(Debug, Clone, Default)]
 pub struct QdotMap {
-    /// `(q index, v index)` of scalar coordinates (`qdot = v`).
-    scalar: Vec<(usize, usize)>,
+    /// `(q start, v start, length)` of runs of consecutive scalar coordinates (`qdot = v`),
+    /// copied as slices.
+    scalar: Vec<(usize, usize, usize)>,
     /// `(q index, v index)` of quaternion free joints.
     free: Vec<(usize, usize)>,
 }
@@ -21,16 +22,24 @@ impl QdotMap {
             let (qi, vi) = (b.q_index(), b.v_index());
             match b.joint() {
                 JointModel::FreeQuaternion => m.free.push((qi, vi)),
-                j => (0..j.nv()).for_each(|c| m.scalar.push((qi + c, vi + c))),
+                j => (0..j.nv()).for_each(|c| m.push_scalar(qi + c, vi + c)),
             }
         }
         m
     }
 
+    /// Adds scalar coordinate `(qi, vi)`, extending the last run if it continues it.
+    fn push_scalar(&mut self, qi: usize, vi: usize) {
+        match self.scalar.last_mut() {
+            Some((q0, v0, n)) if *q0 + *n == qi && *v0 + *n == vi => *n += 1,
+            _ => self.scalar.push((qi, vi, 1)),
+        }
+    }
+
     /// Writes `qdot(q, v)` into `qdot` (length `nq`).
     pub fn qdot(&self, q: &[f64], v: &[f64], qdot: &mut [f64]) {
-        for &(qi, vi) in &self.scalar {
-            qdot[qi] = v[vi];
+        for &(qi, vi, n) in &self.scalar {
+            qdot[qi..qi + n].copy_from_slice(&v[vi..vi + n]);
         }
         for &(qi, vi) in &self.free {
             let quat = Quaternion::new(q[qi + 6], q[qi + 3], q[qi + 4], q[qi + 5]);
