@@ -31,7 +31,7 @@
 
 mod closure;
 
-use super::cache::LoopSlots;
+use super::cache::{instance_id, LoopSlots};
 use super::jet::{bad_param, input_arrays, seed_inputs, FrameJet, SJet, VJet};
 use super::{CoupledMotion, Coupling, MechanismError, RelativeMotion};
 use closure::{trig, Closure};
@@ -133,8 +133,10 @@ pub struct AnkleDrive {
 
 /// One validated spatial slider-crank: everything its parts need, nothing more (small, so
 /// that [`AnkleCoupling`] stays small).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy)]
 struct SliderCrank {
+    /// Construction identity ([`super::cache::instance_id`]), the cache key; ignored by `==`.
+    id: u64,
     /// Ankle centre `C` (shank frame).
     center: Vector3<f64>,
     /// Geometry (screw axis normalized).
@@ -143,6 +145,13 @@ struct SliderCrank {
     frame: Matrix3<f64>,
     /// `N_screw`.
     ratio: f64,
+}
+
+impl PartialEq for SliderCrank {
+    /// Equal geometry (the construction identity is not compared).
+    fn eq(&self, o: &Self) -> bool {
+        (self.center, self.act, self.frame, self.ratio) == (o.center, o.act, o.frame, o.ratio)
+    }
 }
 
 /// Per-actuator jets of one evaluation.
@@ -193,6 +202,7 @@ impl AnkleDrive {
             let e = VJet::<2>::constant(act.screw_axis);
             let f = FrameJet::from_direction(e, &Vector3::y(), e);
             SliderCrank {
+                id: instance_id(),
                 center: params.ankle_center,
                 act,
                 frame: Matrix3::from_columns(&[f.x.v, f.y.v, f.z.v]),
@@ -425,10 +435,10 @@ impl SliderCrank {
 #[derive(Debug, Clone, Copy, Default)]
 pub struct AnkleLoop(LoopSlots<AnkleKey, Closure>);
 
-/// Identity of a closed loop: the crank and its exact inputs.
+/// Identity of a closed loop: the crank's construction identity and its exact inputs.
 #[derive(Debug, Clone, Copy)]
 struct AnkleKey {
-    crank: SliderCrank,
+    id: u64,
     q: [f64; 2],
     qd: [f64; 2],
 }
@@ -477,15 +487,15 @@ impl AnkleCoupling {
         let (q, qd) = input_arrays::<2>(NAME, q_in, qd_in)?;
         let slots = &mut cache.get_or_insert_with(AnkleLoop::default).0;
         let crank = &self.crank;
-        let hit = slots.find(|k| k.q == q && k.qd == qd && k.crank == *crank);
+        let hit = slots.find(|k| k.id == crank.id && k.q == q && k.qd == qd);
         let closure = match hit {
-            Some(c) => *c,
+            Some(c) => return Ok(crank.part_motion(self.part, c)),
             None => {
                 let t = slots.find(|k| k.q == q).map_or_else(|| trig(q), |c| c.trig);
                 let c = crank.solve(q, t, qd)?;
                 slots.store(
                     AnkleKey {
-                        crank: *crank,
+                        id: crank.id,
                         q,
                         qd,
                     },
@@ -507,7 +517,7 @@ impl AnkleCoupling {
     ) -> Result<[f64; 2], MechanismError> {
         let (q, _) = input_arrays::<2>(NAME, q_in, &[0.0; 2])?;
         let crank = &self.crank;
-        let hit = cache.and_then(|c| c.0.find(|k| k.q == q && k.crank == *crank));
+        let hit = cache.and_then(|c| c.0.find(|k| k.id == crank.id && k.q == q));
         let fresh;
         let closure = match hit {
             Some(c) => c,

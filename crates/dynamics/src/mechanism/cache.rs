@@ -5,6 +5,16 @@
 //! Entries are keyed by the drive's geometry and the exact input values `(q_in, qd_in)`, so a
 //! lookup never returns a stale solution: a hit is bit-for-bit the loop at those inputs.
 
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// A fresh construction identity for a validated drive: copies share it and a drive's
+/// geometry never changes after validation, so equal ids imply equal geometry (a cheap cache
+/// key; equal geometry with different ids only costs a cache miss).
+pub fn instance_id() -> u64 {
+    static NEXT: AtomicU64 = AtomicU64::new(0);
+    NEXT.fetch_add(1, Ordering::Relaxed)
+}
+
 /// Closed loops kept per mechanism type (Lola: four ankle slider-cranks, two knee drives).
 pub const LOOP_SLOTS: usize = 4;
 

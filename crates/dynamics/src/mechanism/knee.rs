@@ -35,7 +35,7 @@
 
 mod closure;
 
-use super::cache::LoopSlots;
+use super::cache::{instance_id, LoopSlots};
 use super::jet::{bad_param, input_arrays, seed_inputs, FrameJet, SJet, VJet};
 use super::{CoupledMotion, Coupling, MechanismError, RelativeMotion};
 use closure::KneeClosure;
@@ -111,13 +111,22 @@ pub enum KneePart {
 }
 
 /// A validated knee drive, (3.3)-(3.21).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy)]
 pub struct KneeDrive {
+    /// Construction identity ([`super::cache::instance_id`]), the cache key; ignored by `==`.
+    id: u64,
     params: KneeDriveParams,
     /// Screw axis used when `screw_tilt` is off.
     fixed_axis: Vector3<f64>,
     /// Sign of `dl/dq` over the working range (+1 or -1).
     sign: f64,
+}
+
+impl PartialEq for KneeDrive {
+    /// Equal parameters (the construction identity is not compared).
+    fn eq(&self, o: &Self) -> bool {
+        (self.params, self.fixed_axis, self.sign) == (o.params, o.fixed_axis, o.sign)
+    }
 }
 
 impl KneeDrive {
@@ -140,6 +149,7 @@ impl KneeDrive {
             ));
         }
         let mut drive = Self {
+            id: instance_id(),
             params,
             fixed_axis: Vector3::zeros(),
             sign: 1.0,
@@ -319,11 +329,11 @@ struct KneeLoop {
     length: SJet<1>,
 }
 
-/// Closed knee loops of the last kinematics pass, keyed by drive and exact knee angle (see
+/// Closed knee loops of the last kinematics pass, keyed by drive identity and exact knee angle (see
 /// [`super::cache`]): the three parts (housing, nut, rotor) of one drive share one loop
 /// closure (3.4)-(3.7), and [`crate::Data::coupled_spin_row`] reads the motor rows back.
 #[derive(Debug, Clone, Copy, Default)]
-pub struct KneeLoopCache(LoopSlots<(KneeDrive, f64), KneeClosure>);
+pub struct KneeLoopCache(LoopSlots<(u64, f64), KneeClosure>);
 
 /// One part of a [`KneeDrive`] as a [`Coupling`] (input: the knee angle).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -358,11 +368,11 @@ impl KneeCoupling {
         let ([q], [qd]) = input_arrays::<1>(NAME, q_in, qd_in)?;
         let slots = &mut cache.get_or_insert_with(KneeLoopCache::default).0;
         let drive = &self.drive;
-        let closure = match slots.find(|(d, x)| *x == q && d == drive) {
-            Some(c) => *c,
+        let closure = match slots.find(|&(id, x)| id == drive.id && x == q) {
+            Some(c) => return Ok(drive.part_motion(self.part, c, qd)),
             None => {
                 let c = drive.solve(q)?;
-                slots.store((*drive, q), c);
+                slots.store((drive.id, q), c);
                 c
             }
         };
@@ -379,7 +389,7 @@ impl KneeCoupling {
     ) -> Result<f64, MechanismError> {
         let ([q], _) = input_arrays::<1>(NAME, q_in, &[0.0])?;
         let drive = &self.drive;
-        let hit = cache.and_then(|c| c.0.find(|(d, x)| *x == q && d == drive));
+        let hit = cache.and_then(|c| c.0.find(|&(id, x)| id == drive.id && x == q));
         let c = match hit {
             Some(c) => *c,
             None => drive.solve(q)?,
