@@ -8,7 +8,7 @@ use biped_control::walk::dynamic::{
     TrackingController,
 };
 use biped_control::walk::{
-    run_dynamic_walk, walk_pattern_params, DynamicWalkParams, Method, WalkParams,
+    run_dynamic_walk, walk_pattern_params, DynamicWalkParams, Method, WalkController, WalkParams,
 };
 use biped_robots::lola::{self, LolaType};
 use biped_sim::drive::FrictionParams;
@@ -128,8 +128,46 @@ fn offset_com_updates_the_lipm_zmp() {
     assert!(moved.offset_com(&off[1..]).is_err());
 }
 
-/// A constant standing reference at `q0` with its RNEA feedforward (double support, ZMP at
-/// the feet midpoint).
+/// Along a walk, the distributed wrenches make RNEA's free-joint entries vanish; in single
+/// support the swing foot carries nothing, in double support both feet carry a share.
+#[test]
+fn feedforward_balances_the_base_in_every_phase() {
+    let lola = lola::build(LolaType::Type2).unwrap();
+    let pat = WalkingPattern::generate(&walk_pattern_params(&lola, 2, 0.4, 0.8).unwrap()).unwrap();
+    let mut ctrl = WalkController::new(&lola, Method::None, WalkParams::default(), &pat).unwrap();
+    let mut ff = Feedforward::new(&lola).unwrap();
+    let dt = pat.params().dt;
+    let mut prev = DVector::zeros(lola.model.nv());
+    let mut seen = [false; 3];
+    for (k, s) in pat.iter().enumerate() {
+        ctrl.cycle(s, dt).unwrap();
+        let a = (ctrl.qdot() - &prev) / dt;
+        prev.copy_from(ctrl.qdot());
+        if k == 0 || k % 97 != 0 {
+            continue;
+        }
+        let (q, v) = (ctrl.q_eval().clone(), ctrl.qdot().clone());
+        let feet = ff.foot_wrenches(&q, &v, &a, s).unwrap();
+        let tau = ff.compute(&q, &v, &a, s).unwrap();
+        let scale = tau.amax().max(1.0);
+        assert!(
+            tau.rows(0, 6).amax() < 1e-9 * scale,
+            "t = {}: {}",
+            s.t,
+            tau.rows(0, 6)
+        );
+        let fz = feet.map(|w| w.lin.norm());
+        match s.phase {
+            Phase::LeftStance => assert!(fz[1] == 0.0 && fz[0] > 400.0, "{fz:?}"),
+            Phase::RightStance => assert!(fz[0] == 0.0 && fz[1] > 400.0, "{fz:?}"),
+            Phase::Double => assert!((fz[0] + fz[1] - 598.6).abs() < 100.0, "{fz:?}"),
+        }
+        seen[s.phase as usize] = true;
+    }
+    assert_eq!(seen, [true; 3]);
+}
+
+/// A constant standing reference at `q0` with its RNEA feedforward (double support).
 fn standing_reference(n: usize) -> (JointReference, DVector<f64>) {
     let lola = lola::build(LolaType::Type2).unwrap();
     let pat = WalkingPattern::generate(&walk_pattern_params(&lola, 1, 0.3, 0.8).unwrap()).unwrap();
@@ -143,9 +181,7 @@ fn standing_reference(n: usize) -> (JointReference, DVector<f64>) {
     let nj = r.joints;
     assert_eq!(r.phase[0], Phase::Double);
     let zeros = DVector::zeros(lola.model.nv());
-    let mut s0 = pat.samples()[0];
-    s0.zmp_ref =
-        0.5 * (s0.feet[0].pose.translation.vector.xy() + s0.feet[1].pose.translation.vector.xy());
+    let s0 = pat.samples()[0];
     let mut ff = Feedforward::new(&lola).unwrap();
     let tau = ff.compute(&r.q0, &zeros, &zeros, &s0).unwrap().clone();
     assert!(

@@ -53,7 +53,7 @@ pub fn run_dynamic_walk(p: &DynamicWalkParams) -> Result<DynamicWalkRun, WalkErr
     ctrl.scale_gains(p.gain_scale);
     let mut sim = Simulation::new(plant, ctrl, Integrator::Rk4, z0).map_err(model_err)?;
     let duration = (reference.len() - 1) as f64 * reference.dt + p.hold_time;
-    simulate(&mut sim, &reference, p, duration, q0[2])
+    simulate(&mut sim, &reference, p, duration)
 }
 
 /// `q` shifted vertically so that the lowest sole point sits at the static penetration of
@@ -79,14 +79,14 @@ fn simulate(
     r: &JointReference,
     p: &DynamicWalkParams,
     duration: f64,
-    z_start: f64,
 ) -> Result<DynamicWalkRun, WalkError> {
-    let mut s = DynamicWalkSeries::default();
+    let cycles = (duration / r.dt).round() as usize + 1;
+    let mut s = DynamicWalkSeries::with_capacity(cycles);
     let (qi, _) = sim
         .plant()
         .floating_base()
         .ok_or_else(|| model_err("plant without floating base"))?;
-    let fall_height = z_start - p.fall_drop;
+    let fall_height = sim.state()[qi + 2] - p.fall_drop;
     let mut fell_at = None;
     let rhs0 = sim.plant().rhs_count();
     let start = Instant::now();

@@ -24,6 +24,21 @@ pub struct DynamicWalkSeries {
     pub tracking_error: Vec<f64>,
 }
 
+impl DynamicWalkSeries {
+    /// Empty series with room for `n` cycles.
+    pub fn with_capacity(n: usize) -> Self {
+        Self {
+            t: Vec::with_capacity(n),
+            base: Vec::with_capacity(n),
+            planned_base_x: Vec::with_capacity(n),
+            tilt: Vec::with_capacity(n),
+            foot_fz: Vec::with_capacity(n),
+            tau_z: Vec::with_capacity(n),
+            tracking_error: Vec::with_capacity(n),
+        }
+    }
+}
+
 /// Summary of a dynamic walk (the `"dynamic"` entry of `summary.json`; SI units).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct DynamicWalkSummary {
