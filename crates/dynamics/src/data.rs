@@ -7,7 +7,8 @@ use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::model::{Body, JointModel};
 use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, SpatialTransform};
-use crate::subsystem::rotor::RotorConstant;
+use crate::subsystem::link::{link_rotor_subsystems, LinkRotors};
+use crate::subsystem::rotor::{constant_congruences, RotorConstant};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
 use crate::Model;
 use nalgebra::{
@@ -81,6 +82,8 @@ pub struct Data {
     pub(crate) rotor_frame: Vec<SpatialTransform>,
     /// Spin-invariant `C^T M C`, `B_S` row and `M_S` entry of axisymmetric rotor members (2.76).
     pub(crate) rotor_constant: Vec<Option<RotorConstant>>,
+    /// Per sub-system: the constants of a one-link-with-rotors sub-system ([`crate::subsystem::link`]).
+    pub(crate) link_rotors: Vec<Option<LinkRotors>>,
     /// Per body: whether the O(n) passes read `mbar` (false for rigid sub-system members, whose
     /// `M-hat` is applied from the rigid-body inertia directly).
     pub(crate) mbar_needed: Vec<bool>,
@@ -113,13 +116,20 @@ pub struct Data {
     pub(crate) factor: DMatrix<f64>,
 }
 
-/// Per body: false for rigid sub-system members (see [`Data::mbar_needed`]).
-fn mbar_needed(model: &Model) -> Vec<bool> {
+/// Per body: false for rigid sub-system members (see [`Data::mbar_needed`]), except the link
+/// of a link-with-rotors sub-system, whose step reads `mbar`.
+fn mbar_needed(model: &Model, rotor_constant: &[Option<RotorConstant>]) -> Vec<bool> {
     let mut needed = vec![true; model.nbodies()];
     for sub in &model.subsystems {
         for (&j, &rigid) in sub.members.iter().zip(&sub.rigid_member) {
             needed[j] = !rigid;
         }
+    }
+    for lr in link_rotor_subsystems(model, rotor_constant)
+        .iter()
+        .flatten()
+    {
+        needed[lr.link] = true;
     }
     needed
 }
@@ -162,6 +172,7 @@ impl Data {
             }
         }
         let rotor_frames = crate::kinematics::rotor_frames(model);
+        let rotor_constant = constant_congruences(model, &rotor_frames);
         let mut col_offset = vec![0; n + 1];
         for (i, b) in model.bodies.iter().enumerate() {
             col_offset[i + 1] = col_offset[i] + b.v_set.len();
@@ -195,10 +206,11 @@ impl Data {
             sub_l: vec![[[0.0; MAX_SUBSYSTEM_DOF]; MAX_SUBSYSTEM_DOF]; ns],
             sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
-            rotor_constant: crate::subsystem::rotor::constant_congruences(model, &rotor_frames),
+            link_rotors: link_rotor_subsystems(model, &rotor_constant),
+            mbar_needed: mbar_needed(model, &rotor_constant),
+            rotor_constant,
             rotor_frame: rotor_frames,
             plane_axis: model.bodies.iter().map(plane_axis).collect(),
-            mbar_needed: mbar_needed(model),
             ankle_loop: None,
             knee_loop: None,
             mechanism_fault: None,

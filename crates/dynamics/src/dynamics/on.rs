@@ -59,7 +59,9 @@ fn dynamic_first_pass(
         data.fbar[i] = data.force[i];
     }
     for s in 0..model.subsystems.len() {
-        subsystem::on::hat_kinematics(model, data, s);
+        if data.link_rotors[s].is_none() {
+            subsystem::on::hat_kinematics(model, data, s);
+        }
     }
     Ok(())
 }
@@ -124,6 +126,9 @@ pub fn backward_pass(
     for node in model.nodes.iter().rev() {
         match node.kind {
             NodeKind::Body(i) => body_backward(model, data, i, tau)?,
+            NodeKind::Subsystem(s) if data.link_rotors[s].is_some() => {
+                subsystem::link::backward(model, data, s, tau)?
+            }
             NodeKind::Subsystem(s) => subsystem::on::backward(model, data, s, tau)?,
         }
     }
@@ -228,6 +233,9 @@ pub fn forward_pass_2<'d>(model: &Model, data: &'d mut Data) -> &'d DVector<f64>
     for node in &model.nodes {
         match node.kind {
             NodeKind::Body(i) => body_forward(model, data, i),
+            NodeKind::Subsystem(s) if data.link_rotors[s].is_some() => {
+                subsystem::link::forward(model, data, s)
+            }
             NodeKind::Subsystem(s) => subsystem::on::forward(model, data, s),
         }
     }

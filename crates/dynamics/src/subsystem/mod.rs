@@ -8,6 +8,7 @@
 //! `a_j = C-hat_j a_p + J-hat_j qddot_S + b-hat_j`.
 
 mod generate;
+pub(crate) mod link;
 pub(crate) mod on;
 pub(crate) mod rotor;
 

@@ -1,0 +1,134 @@
+//! One-DoF sub-systems made of a single link on the sub-system's parent and spin-invariant
+//! Harmonic Drive rotors (the Lola drive trains of section 3.1): the O(n) branches (2.75)-(2.90)
+//! reduced to the ordinary one-DoF body step plus constant rotor terms.
+//!
+//! With the link's `U = M-bar J`, `f-hat = M-bar b - f-bar` (link frame) and the rotors'
+//! constants ([`super::rotor`]) summed, `M_S = J^T U + sum s^T K s` (a scalar `D`),
+//! `B_S = C^T U + sum K s` (parent frame), `p_S = (Q - J^T f-hat - sum s . h) / D` with the
+//! rotors' parent-frame `h = C^T (M b - f)`, `K_S = C^T M-bar C + sum K - B_S B_S^T / D` and
+//! `k_S = C^T f-hat + sum h + B_S p_S`. No member kinematics (2.77)-(2.79) are formed: the
+//! link's `C-hat`, `J-hat`, `b-hat` are its own `C`, `J`, `b`.
+
+use crate::model::joint::Joint;
+use crate::spatial::{ArticulatedInertia, Force, Motion};
+use crate::{Data, DynamicsError, Model};
+use nalgebra::DVector;
+
+/// Constant data of a link-with-rotors sub-system (see the module doc).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LinkRotors {
+    /// The link body.
+    pub(crate) link: usize,
+    /// `sum K` of the rotors (parent frame).
+    pub(crate) congruence: ArticulatedInertia,
+    /// `sum K s` of the rotors.
+    pub(crate) ks: Force,
+    /// `sum s^T K s` of the rotors.
+    pub(crate) sks: f64,
+}
+
+/// Per sub-system: its [`LinkRotors`] if it has one coordinate, exactly one member that is not
+/// a spin-invariant rotor, and that member is a revolute or prismatic link on the parent.
+pub(crate) fn link_rotor_subsystems(
+    model: &Model,
+    rotor_constant: &[Option<super::rotor::RotorConstant>],
+) -> Vec<Option<LinkRotors>> {
+    let one = |s: &super::Subsystem| {
+        let mut links = s.members.iter().filter(|&&j| rotor_constant[j].is_none());
+        let (Some(&link), None) = (links.next(), links.next()) else {
+            return None;
+        };
+        let body = &model.bodies[link];
+        let plain = matches!(body.joint, Joint::Revolute(_) | Joint::Prismatic(_));
+        if s.v_set.len() != 1 || !plain || body.parent != s.parent {
+            return None;
+        }
+        let mut out = LinkRotors {
+            link,
+            congruence: ArticulatedInertia::zero(),
+            ks: Force::zero(),
+            sks: 0.0,
+        };
+        for rc in s.members.iter().filter_map(|&j| rotor_constant[j].as_ref()) {
+            out.congruence += rc.congruence;
+            out.ks += rc.ks;
+            out.sks += rc.sks;
+        }
+        Some(out)
+    };
+    model.subsystems.iter().map(one).collect()
+}
+
+/// Backward step (Algorithm 2.3) of link-with-rotors sub-system `s` (`data.link_rotors[s]` is
+/// set); stores `B_S` in `u[link]`, `D^-1` in `dinv[link]` and `p_S` in `p1[link]`.
+pub(crate) fn backward(
+    model: &Model,
+    data: &mut Data,
+    s: usize,
+    tau: &DVector<f64>,
+) -> Result<(), DynamicsError> {
+    let Some(lr) = &data.link_rotors[s] else {
+        return Err(DynamicsError::Unsupported(
+            "not a link-with-rotors sub-system",
+        ));
+    };
+    let (sub, link) = (&model.subsystems[s], lr.link);
+    let (Joint::Revolute(ax) | Joint::Prismatic(ax)) = &model.bodies[link].joint else {
+        return Err(DynamicsError::Unsupported(
+            "link sub-system without a one-DoF link",
+        ));
+    };
+    let vi = sub.v_set[0];
+    let (mut rhs, mut h) = (tau[vi], Force::zero());
+    for &j in &sub.members {
+        if let Some(rc) = &data.rotor_constant[j] {
+            rhs -= rc.s.dot(&data.fbar[j]);
+            h += data.fbar[j];
+        }
+    }
+    let m = &data.mbar[link];
+    let u = ax.apply_inertia(m);
+    let hat_f = m.apply(&data.bias_acc[link]) - data.fbar[link];
+    let d = ax.dot_force(&u) + lr.sks;
+    if d <= 0.0 || !d.is_finite() {
+        return Err(DynamicsError::NotPositiveDefinite {
+            index: vi,
+            pivot: d,
+        });
+    }
+    let x = data.x[link];
+    let b = x.tr_apply_force(&u) + lr.ks;
+    let p = (rhs - ax.dot_force(&hat_f)) / d;
+    data.u[link] = b;
+    data.dinv[link] = 1.0 / d;
+    data.p1[link] = p;
+    let Some(parent) = sub.parent else {
+        return Ok(());
+    };
+    let k = x.tr_apply_force(&hat_f) + h + b * p;
+    let (head, tail) = data.mbar.split_at_mut(link);
+    let (m, out) = (&tail[0], &mut head[parent]);
+    match data.plane_axis[link] {
+        Some(axis) => *out += m.tr_transform_axis(axis, &x),
+        None => m.add_tr_transform_to(&x, out),
+    }
+    *out += lr.congruence;
+    out.sub_outer(&b, 1.0 / d);
+    data.fbar[parent] -= k;
+    Ok(())
+}
+
+/// Second forward step (Algorithm 2.4) of link-with-rotors sub-system `s`:
+/// `qddot = p_S - D^-1 B_S^T a_p` and the link's acceleration `C a_p + J qddot + b`.
+pub(crate) fn forward(model: &Model, data: &mut Data, s: usize) {
+    let Some(lr) = &data.link_rotors[s] else {
+        return;
+    };
+    let (sub, link) = (&model.subsystems[s], lr.link);
+    let ap = sub.parent.map_or(Motion::zero(), |p| data.acc[p]);
+    let qdd = data.p1[link] - data.dinv[link] * data.u[link].dot(&ap);
+    data.ddq[sub.v_set[0]] = qdd;
+    if let Joint::Revolute(ax) | Joint::Prismatic(ax) = &model.bodies[link].joint {
+        data.acc[link] = data.x[link].apply_motion(&ap) + ax.motion(qdd) + data.bias_acc[link];
+    }
+}
