@@ -5,7 +5,7 @@
 //! - [`reference`]: the kinematic walk of one arm method sampled at 1 kHz: actuated joints'
 //!   `q`, `qdot`, feedforward torques, planned base position, support phase.
 //! - [`feedforward`]: RNEA of the planned motion with the ground wrench distributed over the
-//!   support feet (single support: stance foot; double support: split by the pattern's ZMP).
+//!   support feet (single support: stance foot; double support: split by the motion's ZMP).
 //! - [`tracking`]: [`TrackingController`], PD per joint + feedforward, joint-torque mode.
 //! - [`run`]: [`run_dynamic_walk`] on the Lola Type 2 plant (RK4, h = 1 ms), time series and
 //!   the verdict.
@@ -15,12 +15,19 @@
 //!   plant's actuators in the order of `LolaModel::limits` (one per actuated joint), so the
 //!   reference maps one to one; the start pose is the first reference sample lowered so that
 //!   the soles rest at the contact law's static penetration.
-//! - The pattern's CoM is corrected for the multibody ZMP ([`reference`]); the trunk
-//!   inclination is fed back through the support ankles ([`stabiliser`]).
+//! - Tracking the LIPM pattern as planned (PD + feedforward only) falls forward after 2-4
+//!   steps: the multibody ZMP of the IK motion leaves the 0.13 m front edge of the sole. So
+//!   the pattern's CoM is corrected for the multibody ZMP ([`reference`], 2 iterations by
+//!   default), and the trunk inclination is fed back through the support ankles
+//!   ([`stabiliser`]); each of the two alone is not enough for the default walk, and without
+//!   the RNEA feedforward the PD alone falls too.
 //! - The rear ankle of the flat-footed pattern goes beyond its limit at the end of double
 //!   support (see [`crate::walk`]); the plant has no joint stops, so by default the reference
 //!   is tracked as planned. `clamp_margin = Some(m)` clamps the reference into the limits
-//!   (shrunk by `m`) instead; the summary reports how many samples and by how much.
+//!   (shrunk by `m`) instead and the summary reports how many samples and by how much; with
+//!   `m = 0` the default walk falls in its second step (the clamped rear leg pushes the body
+//!   without toe-off, which neither the pattern nor the sole contact model has). Making the
+//!   reference feasible needs toe-off (a toe contact and a heel-lift phase in the pattern).
 //! - Verdict: walked = no fall (base height never below its start minus `fall_drop`, trunk
 //!   tilt never above `max_tilt`) and forward progress `>= min_progress` of the planned
 //!   base travel.
