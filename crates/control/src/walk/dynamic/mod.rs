@@ -2,7 +2,7 @@
 //! simulation of `biped_sim` (issue 6 point 7; thesis 2.1 Fig. 2.1 for the loop, 4.5 / 7.3 for
 //! the walk).
 //!
-//! - [`reference`]: the kinematic walk of one arm method sampled at 1 kHz: actuated joints'
+//! - [`mod@reference`]: the kinematic walk of one arm method sampled at 1 kHz: actuated joints'
 //!   `q`, `qdot`, feedforward torques, planned base position, support phase.
 //! - [`feedforward`]: RNEA of the planned motion with the ground wrench distributed over the
 //!   support feet (single support: stance foot; double support: split by the motion's ZMP).
@@ -17,7 +17,7 @@
 //!   the soles rest at the contact law's static penetration.
 //! - Tracking the LIPM pattern as planned (PD + feedforward only) falls forward after 2-4
 //!   steps: the multibody ZMP of the IK motion leaves the 0.13 m front edge of the sole. So
-//!   the pattern's CoM is corrected for the multibody ZMP ([`reference`], 2 iterations by
+//!   the pattern's CoM is corrected for the multibody ZMP ([`mod@reference`], 2 iterations by
 //!   default), and the trunk inclination is fed back through the support ankles
 //!   ([`stabiliser`]); each of the two alone is not enough for the default walk, and without
 //!   the RNEA feedforward the PD alone falls too.
@@ -74,7 +74,7 @@ pub struct DynamicWalkParams {
     pub stabiliser: Option<StabiliserGains>,
     /// Clamp the reference into the joint limits shrunk by this margin \[rad] (`None`: no).
     pub clamp_margin: Option<f64>,
-    /// Multibody ZMP correction iterations of the pattern (see [`reference`]).
+    /// Multibody ZMP correction iterations of the pattern (see [`mod@reference`]).
     pub zmp_iterations: usize,
     /// Standing time simulated after the walk \[s].
     pub hold_time: f64,
