@@ -61,13 +61,15 @@ fn open_loop_lipm_walk_falls_and_is_reported() {
         stabiliser: None,
         ..DynamicWalkParams::default()
     };
-    let s = run_dynamic_walk(&p)
-        .expect("simulation itself succeeds")
-        .summary;
+    let run = run_dynamic_walk(&p).expect("simulation itself succeeds");
+    let s = run.summary;
     assert!(!s.walked);
     let t = s.fell_at.expect("falls");
     assert!(t > 1.0 && t < 9.0, "{t}");
-    assert!(s.max_tilt > p.max_tilt || s.min_base_height < 0.968 - p.fall_drop);
+    let z0 = run.series.base[0][2];
+    assert!(s.max_tilt > p.max_tilt || s.min_base_height < z0 - p.fall_drop);
+    // the run stops at the fall
+    assert!((s.sim_time - t).abs() < 0.06, "{} vs {t}", s.sim_time);
     assert!(s.progress < 0.8, "{}", s.progress);
 }
 
@@ -158,13 +160,19 @@ fn feedforward_balances_the_base_in_every_phase() {
         );
         let fz = feet.map(|w| w.lin.norm());
         match s.phase {
-            Phase::LeftStance => assert!(fz[1] == 0.0 && fz[0] > 400.0, "{fz:?}"),
-            Phase::RightStance => assert!(fz[0] == 0.0 && fz[1] > 400.0, "{fz:?}"),
-            Phase::Double => assert!((fz[0] + fz[1] - 598.6).abs() < 100.0, "{fz:?}"),
+            Phase::LeftStance => assert!(fz[1] == 0.0 && fz[0] > 0.7 * weight(&lola), "{fz:?}"),
+            Phase::RightStance => assert!(fz[0] == 0.0 && fz[1] > 0.7 * weight(&lola), "{fz:?}"),
+            Phase::Double => assert!((fz[0] + fz[1] - weight(&lola)).abs() < 100.0, "{fz:?}"),
         }
         seen[s.phase as usize] = true;
     }
     assert_eq!(seen, [true; 3]);
+}
+
+/// Weight `m |g|` of the Lola model \[N].
+fn weight(lola: &lola::LolaModel) -> f64 {
+    let m: f64 = lola.model.bodies().iter().map(|b| b.inertia().mass()).sum();
+    m * lola.model.gravity().norm()
 }
 
 /// A constant standing reference at `q0` with its RNEA feedforward (double support).
@@ -268,10 +276,11 @@ fn rnea_with_simulated_contact_wrenches_reproduces_the_commands() {
     let cmd_now = sim.plant().commands().to_vec();
     sim.run(h, &mut |_| Ok(())).unwrap();
     let a = (v_of(&sim) - &v_prev) / (2.0 * h);
-    let weight: f64 = measured.iter().map(|w| w.lin.norm()).sum();
+    let carried: f64 = measured.iter().map(|w| w.lin.norm()).sum();
+    let weight = weight(&lola);
     assert!(
-        (weight - 598.6).abs() < 10.0,
-        "contact carries the weight: {weight}"
+        (carried - weight).abs() < 0.02 * weight,
+        "contact carries the weight: {carried} of {weight}"
     );
     let mut ff = Feedforward::new(&lola).unwrap();
     let tau = ff.with_wrenches(&q, &v, &a, measured).unwrap();
