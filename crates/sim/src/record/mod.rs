@@ -197,7 +197,8 @@ impl Recorder {
         Ok(&self.columns[s.first..s.first + s.len])
     }
 
-    /// Writes `time,<columns>` and one line per sample with shortest round-trip `f64` text.
+    /// Writes `time,<columns>` and one line per sample with shortest round-trip `f64` text
+    /// ([`push_f64`]).
     pub fn write_csv(&self, path: &Path) -> Result<(), RecordError> {
         if self.is_empty() {
             return Err(RecordError::Empty);
@@ -214,20 +215,40 @@ impl Recorder {
         self.csv_to(&mut w).and_then(|_| w.flush()).map_err(io)
     }
 
-    /// Writes the CSV text to `w`.
+    /// Writes the CSV text to `w`, one row buffer per line.
     fn csv_to(&self, w: &mut impl Write) -> std::io::Result<()> {
         write!(w, "time")?;
         for n in &self.names {
             write!(w, ",{n}")?;
         }
         writeln!(w)?;
-        for (r, t) in self.time.iter().enumerate() {
-            write!(w, "{t:?}")?;
+        let mut row = Vec::with_capacity(32 * (self.columns.len() + 1));
+        for (r, &t) in self.time.iter().enumerate() {
+            row.clear();
+            push_f64(&mut row, t)?;
             for c in &self.columns {
-                write!(w, ",{:?}", c[r])?;
+                row.push(b',');
+                push_f64(&mut row, c[r])?;
             }
-            writeln!(w)?;
+            row.push(b'\n');
+            w.write_all(&row)?;
         }
+        Ok(())
+    }
+}
+
+/// Appends the shortest text that parses back to exactly `x` (serde_json's float formatter;
+/// `NaN`, `inf`, `-inf` as Rust prints them, which JSON cannot represent).
+pub fn push_f64(out: &mut Vec<u8>, x: f64) -> std::io::Result<()> {
+    if x.is_finite() {
+        serde_json::to_writer(out, &x).map_err(std::io::Error::other)
+    } else {
+        let text: &[u8] = match (x.is_nan(), x > 0.0) {
+            (true, _) => b"NaN",
+            (false, true) => b"inf",
+            (false, false) => b"-inf",
+        };
+        out.extend_from_slice(text);
         Ok(())
     }
 }
