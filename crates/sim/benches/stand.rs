@@ -1,14 +1,17 @@
 //! `stand` on Lola Type 2 with RK4 at the 1 kHz control period (issue item 9): wall time of
 //! 0.2 s simulated (real-time factor = 0.2 s / time), and the parts of one right-hand side:
 //! the whole rhs, the forward dynamics alone, contact + drives without dynamics, and the
-//! contact layer alone.
+//! contact layer alone; the recorder's share: the same run with every signal recorded each
+//! cycle (as `biped simulate` does) and writing its CSV.
 
 use biped_dynamics::{forward_dynamics, Algorithm, Data, Wrench};
 use biped_robots::lola::LolaType;
 use biped_sim::contact::ContactSet;
 use biped_sim::ode::{Method, OdeSystem};
 use biped_sim::plant::{lola_plant, Plant, PlantConfig};
+use biped_sim::record::Recorder;
 use biped_sim::scenario::{build, Scenario, ScenarioKind, ScenarioOptions};
+use biped_sim::simulation::Signals;
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
 use nalgebra::DVector;
 use std::hint::black_box;
@@ -35,6 +38,20 @@ fn stand(c: &mut Criterion) {
             BatchSize::LargeInput,
         )
     });
+    g.bench_function("0.2 s simulated, signals recorded", |b| {
+        b.iter_batched(
+            setup,
+            |(plant, sc)| black_box(recorded(plant, sc)),
+            BatchSize::LargeInput,
+        )
+    });
+    let (plant, sc) = setup();
+    let rec = recorded(plant, sc);
+    let path = std::env::temp_dir().join(format!("biped_bench_{}.csv", std::process::id()));
+    g.bench_function("CSV of 0.2 s recorded (201 rows)", |b| {
+        b.iter(|| rec.write_csv(black_box(&path)).unwrap())
+    });
+    let _ = std::fs::remove_file(&path);
     g.finish();
 
     let (mut plant, sc) = setup();
@@ -80,6 +97,15 @@ fn stand(c: &mut Criterion) {
         })
     });
     g.finish();
+}
+
+/// Runs the scenario recording every signal (with CoM and `L_G`) each cycle.
+fn recorded(plant: Plant, sc: Scenario) -> Recorder {
+    let mut signals = Signals::new(&plant, true);
+    let mut rec = Recorder::with_capacity(256);
+    sc.run(plant, Method::Rk4, &mut |f| signals.record(f, &mut rec))
+        .unwrap();
+    rec
 }
 
 criterion_group!(benches, stand);

@@ -6,8 +6,10 @@
 //! (48 for 16 points). Our normal law is algebraic in the penetration and its rate, so only
 //! the two tangential bristle deflections are states: 2 per point, 32 for 16 points.
 //!
-//! Forces are computed before the dynamics pass from each foot's own joint chain
-//! ([`chain::BodyChain`]), so a right-hand side needs no extra kinematics pass.
+//! Forces are computed between the two phases of forward dynamics from the foot poses and
+//! velocities of its kinematics pass ([`ContactSet::evaluate_from`]), so a right-hand side
+//! runs one kinematics pass; without a dynamics call (sensor outputs, energy, lowest point)
+//! each foot's own joint chain ([`chain::BodyChain`]) gives them instead.
 //!
 //! Stiffness and the 1 ms RK4 step (issue item 9). RK4 is stable for `h lambda` on the
 //! negative real axis down to -2.78 and for oscillations up to `h omega ~ 2.8`. The defaults
