@@ -73,7 +73,8 @@ pub fn start_on_ground(plant: &Plant, q: &DVector<f64>) -> Result<DVector<f64>, 
     Ok(q)
 }
 
-/// Runs the loop in chunks of 50 ms, recording every cycle and stopping at a fall.
+/// Runs the loop in chunks of 50 ms, recording every cycle; stops at the end of the chunk in
+/// which a fall is detected (so the series run up to 50 ms past `fell_at`).
 fn simulate(
     sim: &mut Simulation<TrackingController>,
     r: &JointReference,
