@@ -6,10 +6,12 @@
 //! loops that pass closed, [`crate::drive::Actuator::motor_row_cached`]), then
 //! [`biped_dynamics::forward_dynamics_solve`]. So one evaluation runs one kinematics pass.
 //!
-//! [`Plant::outputs`] (contact and drive outputs without a dynamics call) takes the general
-//! route instead: foot states from each foot's own joint chain ([`crate::contact::BodyChain`]),
-//! which is cheaper than a kinematics pass over all bodies when no dynamics follows.
-//! `tests/sim_fastpath.rs` checks that both routes give the same outputs.
+//! [`Plant::outputs`] (contact and drive outputs without a dynamics call) takes the foot
+//! states from each foot's own joint chain ([`crate::contact::BodyChain`]) instead, which is
+//! cheaper than a kinematics pass over all bodies when no dynamics follows; its motor rows
+//! miss the loop caches and close the loops once. `tests/sim_fastpath.rs` checks both routes
+//! against a reference assembled from the general parts (chains, rows re-evaluated from the
+//! mechanisms, `forward_dynamics` in one call).
 
 use super::Plant;
 use crate::drive::DriveMode;
@@ -41,13 +43,14 @@ impl Plant {
         let (s, sdot) = (&z[l.contact()], &mut zdot[l.contact()]);
         let out = &mut self.out.contact;
         self.contact.evaluate(q, v, s, sdot, &mut self.fext, out);
-        self.drive_forces(z, zdot, false)
+        self.drive_forces(z, zdot)
     }
 
     /// Drive torques of every actuator and elastic gear torques into `tau`; current rates into
-    /// `zdot` in voltage mode. Motor rows of roller-screw rotors are refreshed at `q`, from the
-    /// loops of the last kinematics pass in `data` if `cached` (which must be at this `q`).
-    fn drive_forces(&mut self, z: &[f64], zdot: &mut [f64], cached: bool) -> Result<(), SimError> {
+    /// `zdot` in voltage mode. Motor rows of roller-screw rotors are refreshed at `q` by
+    /// [`crate::drive::Actuator::motor_row_cached`]: a cache hit after the kinematics pass of a
+    /// right-hand side, one closed-form loop closure otherwise (always correct for `q`).
+    fn drive_forces(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
         let l = self.layout;
         let (q, v) = (self.q.as_slice(), self.v.as_slice());
         self.tau.fill(0.0);
@@ -57,10 +60,7 @@ impl Plant {
         let currents = l.currents().start;
         for (k, a) in self.actuators.iter().enumerate() {
             if a.row_varies() {
-                self.rows[k] = match cached {
-                    true => a.motor_row_cached(&self.model, &self.data, q)?,
-                    false => a.motor_row(&self.model, q)?,
-                };
+                self.rows[k] = a.motor_row_cached(&self.model, &self.data, q)?;
             }
             let i = if voltage { z[currents + k] } else { 0.0 };
             let ds = a.apply(self.rows[k].as_ref(), mode, self.commands[k], i, v, tau);
@@ -89,7 +89,7 @@ impl Plant {
         let out = &mut self.out.contact;
         self.contact
             .evaluate_from(&self.data, s, sdot, &mut self.fext, out);
-        self.drive_forces(z, zdot, true)?;
+        self.drive_forces(z, zdot)?;
         let (m, algo) = (&self.model, self.config.algorithm);
         let ddq = forward_dynamics_solve(m, &mut self.data, &self.tau, Some(&self.fext), algo)?;
         finite("qddot", ddq.as_slice())?;
