@@ -10,7 +10,7 @@ use crate::model::joint::{
     six_dof_motion, Joint,
 };
 use crate::model::{Body, JointModel};
-use crate::spatial::{Axis, Force, Motion, SpatialTransform, Wrench};
+use crate::spatial::{sin_cos, Axis, Force, Motion, SpatialTransform, Wrench};
 use crate::{Data, DynamicsError, Model};
 use nalgebra::{DVector, Isometry3, Matrix3, Translation3, Vector3, Vector6};
 
@@ -146,7 +146,7 @@ fn joint_kinematics(
     let (qi, vi) = (body.q_index, body.v_index);
     match &body.joint {
         Joint::Revolute(ax) | Joint::Rotor(ax) => {
-            let (s, c) = (q[qi] * ax.scale).sin_cos();
+            let (s, c) = sin_cos(q[qi] * ax.scale);
             let x = SpatialTransform::new(ax.axis.rot_tr_mul(s, c, &pl.rot), pl.trans);
             let rel = v.map_or(Motion::zero(), |v| ax.motion(v[vi]));
             (x, rel, Motion::zero())
@@ -421,7 +421,7 @@ pub(crate) fn rotor_transform(
     if !angle.is_finite() {
         return None;
     }
-    let (s, c) = angle.sin_cos();
+    let (s, c) = sin_cos(angle);
     Some(SpatialTransform::new(
         Axis::Z.rot_tr_mul(s, c, &frame.rot),
         frame.trans,

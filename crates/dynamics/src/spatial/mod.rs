@@ -24,6 +24,7 @@ mod force;
 mod inertia;
 mod motion;
 mod transform;
+mod trig;
 mod vector;
 
 pub use articulated::{sym_congruence, ArticulatedInertia};
@@ -33,6 +34,7 @@ pub use force::{Force, Wrench};
 pub use inertia::RigidInertia;
 pub use motion::Motion;
 pub use transform::SpatialTransform;
+pub use trig::sin_cos;
 
 use nalgebra::{Matrix3, Vector3};
 
