@@ -9,18 +9,16 @@ const PIO2_HI: f64 = 1.570_796_326_734_125_6;
 const PIO2_MID: f64 = 6.077_100_506_303_966e-11;
 /// Remainder `pi/2 - PIO2_HI - PIO2_MID`.
 const PIO2_LO: f64 = 2.022_266_248_795_950_6e-21;
-/// `2 / pi`.
-const TWO_OVER_PI: f64 = 0.636_619_772_367_581_4;
 /// Largest `|x|` reduced here (quadrant count far below `2^20`).
 const REDUCTION_LIMIT: f64 = 1.0e5;
 
 /// `(sin x, cos x)`, see the module doc.
 #[inline]
 pub fn sin_cos(x: f64) -> (f64, f64) {
-    if !(x.abs() <= REDUCTION_LIMIT) {
+    if x.is_nan() || x.abs() > REDUCTION_LIMIT {
         return x.sin_cos();
     }
-    let k = (x * TWO_OVER_PI).round();
+    let k = (x * std::f64::consts::FRAC_2_PI).round();
     let r = ((x - k * PIO2_HI) - k * PIO2_MID) - k * PIO2_LO;
     let (s, c) = kernel(r);
     match (k as i64) & 3 {
