@@ -428,12 +428,25 @@ impl SliderCrank {
     }
 }
 
-/// Closed slider-crank loops of the last kinematics pass, keyed by crank geometry and exact
+/// Closed slider-crank loops of the last kinematics pass, keyed by crank identity and exact
 /// inputs (see [`super::cache`]): the three parts (nut, rotor, rod) of one actuator share one
 /// loop closure (3.23)-(3.29), the two actuators of one ankle share the sines and cosines, and
 /// [`crate::Data::coupled_spin_row`] reads the motor rows back.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct AnkleLoop(LoopSlots<AnkleKey, Closure>);
+#[derive(Debug, Clone, Copy)]
+pub struct AnkleLoop {
+    slots: LoopSlots<AnkleKey, Closure>,
+    /// Ankle angles of the last loop closure and their sines and cosines ([`trig`]).
+    trig: ([f64; 2], [f64; 4]),
+}
+
+impl Default for AnkleLoop {
+    fn default() -> Self {
+        Self {
+            slots: LoopSlots::default(),
+            trig: ([f64::NAN; 2], [0.0; 4]),
+        }
+    }
+}
 
 /// Identity of a closed loop: the crank's construction identity and its exact inputs.
 #[derive(Debug, Clone, Copy)]
@@ -485,26 +498,27 @@ impl AnkleCoupling {
         cache: &mut Option<AnkleLoop>,
     ) -> Result<RelativeMotion, MechanismError> {
         let (q, qd) = input_arrays::<2>(NAME, q_in, qd_in)?;
-        let slots = &mut cache.get_or_insert_with(AnkleLoop::default).0;
+        let cache = cache.get_or_insert_with(AnkleLoop::default);
         let crank = &self.crank;
-        let hit = slots.find(|k| k.id == crank.id && k.q == q && k.qd == qd);
-        let closure = match hit {
-            Some(c) => return Ok(crank.part_motion(self.part, c)),
-            None => {
-                let t = slots.find(|k| k.q == q).map_or_else(|| trig(q), |c| c.trig);
-                let c = crank.solve(q, t, qd)?;
-                slots.store(
-                    AnkleKey {
-                        id: crank.id,
-                        q,
-                        qd,
-                    },
-                    c,
-                );
-                c
-            }
-        };
-        Ok(crank.part_motion(self.part, &closure))
+        let hit = cache
+            .slots
+            .find(|k| k.id == crank.id && k.q == q && k.qd == qd);
+        if let Some(c) = hit {
+            return Ok(crank.part_motion(self.part, c));
+        }
+        if cache.trig.0 != q {
+            cache.trig = (q, trig(q));
+        }
+        let c = crank.solve(q, cache.trig.1, qd)?;
+        cache.slots.store(
+            AnkleKey {
+                id: crank.id,
+                q,
+                qd,
+            },
+            c,
+        );
+        Ok(crank.part_motion(self.part, &c))
     }
 
     /// Part-frame z row of this part's relative Jacobian at `q_in` (for the rotor the motor
@@ -517,7 +531,7 @@ impl AnkleCoupling {
     ) -> Result<[f64; 2], MechanismError> {
         let (q, _) = input_arrays::<2>(NAME, q_in, &[0.0; 2])?;
         let crank = &self.crank;
-        let hit = cache.and_then(|c| c.0.find(|k| k.id == crank.id && k.q == q));
+        let hit = cache.and_then(|c| c.slots.find(|k| k.id == crank.id && k.q == q));
         let fresh;
         let closure = match hit {
             Some(c) => c,

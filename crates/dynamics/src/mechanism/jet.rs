@@ -398,24 +398,27 @@ pub fn seed_inputs<const N: usize>(
 }
 
 /// Checks `q_in`, `qd_in` (length `N`, finite) and returns them as arrays.
+#[inline]
 pub fn input_arrays<const N: usize>(
     mechanism: &'static str,
     q: &[f64],
     qd: &[f64],
 ) -> Result<([f64; N], [f64; N]), MechanismError> {
-    let (Ok(qa), Ok(qda)) = (<[f64; N]>::try_from(q), <[f64; N]>::try_from(qd)) else {
-        return Err(MechanismError::BadInput {
-            mechanism,
-            reason: format!("expected {N} inputs, got q {} / qd {}", q.len(), qd.len()),
-        });
-    };
-    if qa.iter().chain(&qda).any(|x| !x.is_finite()) {
-        return Err(MechanismError::BadInput {
-            mechanism,
-            reason: "non-finite input".into(),
-        });
+    match (<[f64; N]>::try_from(q), <[f64; N]>::try_from(qd)) {
+        (Ok(qa), Ok(qda)) if qa.iter().chain(&qda).all(|x| x.is_finite()) => Ok((qa, qda)),
+        _ => Err(bad_inputs(mechanism, N, q, qd)),
     }
-    Ok((qa, qda))
+}
+
+/// The error of [`input_arrays`] (wrong lengths or a non-finite value).
+#[cold]
+fn bad_inputs(mechanism: &'static str, n: usize, q: &[f64], qd: &[f64]) -> MechanismError {
+    let reason = if q.len() != n || qd.len() != n {
+        format!("expected {n} inputs, got q {} / qd {}", q.len(), qd.len())
+    } else {
+        "non-finite input".into()
+    };
+    MechanismError::BadInput { mechanism, reason }
 }
 
 /// Error for a non-finite or non-positive geometric parameter.

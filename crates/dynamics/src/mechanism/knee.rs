@@ -394,7 +394,12 @@ impl KneeCoupling {
             Some(c) => *c,
             None => drive.solve(q)?,
         };
-        Ok(drive.part_motion(self.part, &c, 0.0).jacobian[0][2])
+        // Only the rotor spins about its z axis ((3.5): N_screw dl/dq); the housing and the
+        // nut turn about the knee axis, their y axis.
+        Ok(match self.part {
+            KneePart::Rotor => drive.screw_ratio() * c.l_q,
+            KneePart::Housing | KneePart::Nut => 0.0,
+        })
     }
 }
 

@@ -11,15 +11,13 @@
 //! (3.32) and twice in time (3.33).
 
 use super::{AnklePart, SliderCrank, NAME};
-use crate::mechanism::{MechanismError, RelativeMotion, MAX_COUPLED};
+use crate::mechanism::{MechanismError, RelativeMotion};
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 /// One slider-crank loop closed at `(q, qd)`: nut travel and foot ball with their partials,
 /// velocity and zero-`qdd` acceleration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Closure {
-    /// `(sin q_0, cos q_0, sin q_1, cos q_1)`, reusable by the other actuator of the ankle.
-    pub trig: [f64; 4],
     /// Nut travel `l` (3.29).
     pub l: f64,
     /// `dl/dq_j` (3.32).
@@ -93,7 +91,6 @@ impl SliderCrank {
         let d_acc =
             (erd * erd + er * era - foot_dot.norm_squared() - r.dot(&foot_acc) - d_dot * d_dot) / d;
         Ok(Closure {
-            trig,
             l: er - d,
             l_q,
             l_dot,
@@ -106,61 +103,69 @@ impl SliderCrank {
     }
 
     /// Pose, Jacobian and bias of one part from the closed loop `c` (3.30)-(3.37).
+    #[inline]
     pub(crate) fn part_motion(&self, part: AnklePart, c: &Closure) -> RelativeMotion {
         let a = &self.act;
-        let mut m = RelativeMotion {
-            rot: self.frame,
-            pos: a.screw_top + a.screw_axis * c.l,
-            jacobian: [Vector6::zeros(); MAX_COUPLED],
-            bias: Vector6::zeros(),
-        };
+        let z6 = Vector6::zeros();
+        let [l0, l1] = c.l_q;
         match part {
-            AnklePart::Nut => {
-                for (col, lq) in m.jacobian.iter_mut().zip(c.l_q) {
-                    col[5] = lq;
-                }
-                m.bias[5] = c.l_acc;
-            }
+            AnklePart::Nut => RelativeMotion {
+                rot: self.frame,
+                pos: a.screw_top + a.screw_axis * c.l,
+                jacobian: [
+                    Vector6::new(0.0, 0.0, 0.0, 0.0, 0.0, l0),
+                    Vector6::new(0.0, 0.0, 0.0, 0.0, 0.0, l1),
+                    z6,
+                ],
+                bias: Vector6::new(0.0, 0.0, 0.0, 0.0, 0.0, c.l_acc),
+            },
             AnklePart::Rotor => {
                 let (s, co) = (self.ratio * c.l + a.motor_offset).sin_cos();
                 let (x, y) = (self.frame.column(0), self.frame.column(1));
-                m.rot = Matrix3::from_columns(&[
-                    x * co + y * s,
-                    y * co - x * s,
-                    self.frame.column(2).into(),
-                ]);
-                m.pos = a.screw_top;
-                for (col, lq) in m.jacobian.iter_mut().zip(c.l_q) {
-                    col[2] = self.ratio * lq;
+                let n = self.ratio;
+                RelativeMotion {
+                    rot: Matrix3::from_columns(&[
+                        x * co + y * s,
+                        y * co - x * s,
+                        self.frame.column(2).into(),
+                    ]),
+                    pos: a.screw_top,
+                    jacobian: [
+                        Vector6::new(0.0, 0.0, n * l0, 0.0, 0.0, 0.0),
+                        Vector6::new(0.0, 0.0, n * l1, 0.0, 0.0, 0.0),
+                        z6,
+                    ],
+                    bias: Vector6::new(0.0, 0.0, n * c.l_acc, 0.0, 0.0, 0.0),
                 }
-                m.bias[2] = self.ratio * c.l_acc;
             }
-            AnklePart::Rod => self.rod_motion(c, &mut m),
+            AnklePart::Rod => self.rod_motion(c),
         }
-        m
     }
 
     /// The coupler rod (origin at the nut ball `m.pos`, z along `u = (F - N) / L`,
     /// `x = normalize(e_y x u)`): body angular velocity `(-y.udot, x.udot, (e_y x udot).y / n)`
     /// with `n = |e_y x u|`, linear velocity `(x, y, z) . e ldot`, and their component-wise
     /// time derivatives at `qdd = 0`.
-    fn rod_motion(&self, c: &Closure, m: &mut RelativeMotion) {
-        let e = &self.act.screw_axis;
-        let inv = 1.0 / self.act.rod_length;
-        let u = (c.foot - m.pos) * inv;
+    fn rod_motion(&self, c: &Closure) -> RelativeMotion {
+        let a = &self.act;
+        let e = &a.screw_axis;
+        let inv = 1.0 / a.rod_length;
+        let nut = a.screw_top + e * c.l;
+        let u = (c.foot - nut) * inv;
         let u_dot = (c.foot_dot - e * c.l_dot) * inv;
         let u_acc = (c.foot_acc - e * c.l_acc) * inv;
         let w = ey_cross(&u);
-        let n = w.norm();
-        let x = w / n;
+        let n_inv = 1.0 / w.norm();
+        let x = w * n_inv;
         let y = u.cross(&x);
-        let omega = |v: &Vector3<f64>| Vector3::new(-y.dot(v), x.dot(v), ey_cross(v).dot(&y) / n);
+        let omega =
+            |v: &Vector3<f64>| Vector3::new(-y.dot(v), x.dot(v), (v.z * y.x - v.x * y.z) * n_inv);
         let lin = Vector3::new(x.dot(e), y.dot(e), u.dot(e));
-        for (j, col) in m.jacobian.iter_mut().take(2).enumerate() {
-            let u_q = (c.foot_q[j] - e * c.l_q[j]) * inv;
-            col.fixed_rows_mut::<3>(0).copy_from(&omega(&u_q));
-            col.fixed_rows_mut::<3>(3).copy_from(&(lin * c.l_q[j]));
-        }
+        let column = |j: usize| {
+            let om = omega(&((c.foot_q[j] - e * c.l_q[j]) * inv));
+            let v = lin * c.l_q[j];
+            Vector6::new(om.x, om.y, om.z, v.x, v.y, v.z)
+        };
         let om = omega(&u_dot);
         let x_dot = y * om.z - u * om.y;
         let y_dot = u * om.x - x * om.z;
@@ -168,12 +173,14 @@ impl SliderCrank {
         let ang = Vector3::new(
             -y_dot.dot(&u_dot) - y.dot(&u_acc),
             x_dot.dot(&u_dot) + x.dot(&u_acc),
-            (ey_cross(&u_acc).dot(&y) + ey_cross(&u_dot).dot(&y_dot) - om.z * n_dot) / n,
+            (ey_cross(&u_acc).dot(&y) + ey_cross(&u_dot).dot(&y_dot) - om.z * n_dot) * n_inv,
         );
-        let lin_bias =
-            Vector3::new(x_dot.dot(e), y_dot.dot(e), u_dot.dot(e)) * c.l_dot + lin * c.l_acc;
-        m.rot = Matrix3::from_columns(&[x, y, u]);
-        m.bias.fixed_rows_mut::<3>(0).copy_from(&ang);
-        m.bias.fixed_rows_mut::<3>(3).copy_from(&lin_bias);
+        let lb = Vector3::new(x_dot.dot(e), y_dot.dot(e), u_dot.dot(e)) * c.l_dot + lin * c.l_acc;
+        RelativeMotion {
+            rot: Matrix3::from_columns(&[x, y, u]),
+            pos: nut,
+            jacobian: [column(0), column(1), Vector6::zeros()],
+            bias: Vector6::new(ang.x, ang.y, ang.z, lb.x, lb.y, lb.z),
+        }
     }
 }
