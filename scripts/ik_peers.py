@@ -75,29 +75,12 @@ def run_pink(urdf, _meshdir, steps):
     return {"peer": "pink " + importlib.metadata.version("pin-pink"), "nv": model.nv, "final_com_error_m": float(err), **stats(times[100:])}
 
 
-def mj_model(urdf, meshdir):
-    import mujoco
-
-    text = open(urdf).read()
-    text = re.sub(r'filename="package://[^"]*/meshes/', 'filename="', text)
-    text = re.sub(
-        r"(<robot[^>]*>)",
-        r'\1<mujoco><compiler meshdir="%s" discardvisual="true" balanceinertia="true"/></mujoco>'
-        % meshdir,
-        text,
-        count=1,
-    )
-    spec = mujoco.MjSpec.from_string(text)
-    root = spec.worldbody.first_body()
-    root.add_freejoint()
-    root.pos = [0, 0, 0.75]
-    return spec.compile()
-
-
 def run_mink(urdf, meshdir, steps):
     import mink
 
-    model = mj_model(urdf, meshdir)
+    from mujoco_stand import load  # the same G1 model as the MuJoCo stand (scripts/)
+
+    model = load(urdf, meshdir)
     conf = mink.Configuration(model)
     conf.update(model.qpos0)
     feet = [
