@@ -41,7 +41,10 @@ impl Coupling for FastKnee {
 /// `fast ~ reference` to round-off (rotation, origin, Jacobian columns, bias).
 fn assert_round_off(fast: &RelativeMotion, reference: &CoupledMotion) {
     let slow = RelativeMotion::from_coupled(reference);
-    assert!((fast.rot - slow.rot).amax() < 1e-13, "rot");
+    // Rotor angles N_screw l (N_screw ~ 1257 rad/m, hundreds of rad) carry the round-off of
+    // l times N_screw: a few ulp of the angle.
+    let drot = (fast.rot - slow.rot).amax();
+    assert!(drot < 1e-12, "rot {drot:e}");
     assert!((fast.pos - slow.pos).amax() < 1e-14, "pos");
     for k in 0..MAX_COUPLED {
         let (a, b) = (fast.jacobian[k], slow.jacobian[k]);

@@ -583,7 +583,8 @@ mod tests {
                     let again = c.relative_cached(&q, &qd, &mut cache).expect("hit");
                     assert_eq!(fast, again);
                     let slow = RelativeMotion::from_coupled(&c.motion(&q, &qd).expect("motion"));
-                    assert!((fast.rot - slow.rot).amax() < 1e-14);
+                    // The rotor angle N_screw l (N_screw ~ 1257 rad/m) amplifies the round-off of l.
+                    assert!((fast.rot - slow.rot).amax() < 1e-13);
                     assert!((fast.pos - slow.pos).amax() < 1e-15);
                     assert!((fast.bias - slow.bias).amax() < 1e-11 * (1.0 + slow.bias.amax()));
                     for (a, b) in fast.jacobian.iter().zip(&slow.jacobian) {

@@ -428,7 +428,8 @@ mod tests {
                     assert_eq!(fast, again);
                     let slow =
                         RelativeMotion::from_coupled(&c.motion(&[q], &[qd]).expect("motion"));
-                    assert!((fast.rot - slow.rot).amax() < 1e-14);
+                    // The rotor angle N_screw l (N_screw ~ 1257 rad/m) amplifies the round-off of l.
+                    assert!((fast.rot - slow.rot).amax() < 1e-13);
                     assert!((fast.pos - slow.pos).amax() < 1e-15);
                     let tol = 1e-12 * (1.0 + slow.bias.amax());
                     assert!(

@@ -1,5 +1,6 @@
 //! Closed-form slider-crank loop (3.23)-(3.33) and part motions (3.30)-(3.37) written out
-//! by hand: the fast path of the kinematics. The jet evaluation of the parent module
+//! by hand: the fast path of the kinematics (sines and cosines from [`crate::spatial::sin_cos`],
+//! within a few ulp of the library's). The jet evaluation of the parent module
 //! ([`super::AnkleCoupling`]'s [`crate::mechanism::Coupling::motion`]) is the reference it is
 //! tested against; both give the same values up to round-off.
 //!
@@ -12,6 +13,7 @@
 
 use super::{AnklePart, SliderCrank, NAME};
 use crate::mechanism::{MechanismError, RelativeMotion};
+use crate::spatial::sin_cos;
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 /// One slider-crank loop closed at `(q, qd)`: nut travel and foot ball with their partials,
@@ -38,8 +40,8 @@ pub(crate) struct Closure {
 
 /// `(sin q_0, cos q_0, sin q_1, cos q_1)`.
 pub(crate) fn trig(q: [f64; 2]) -> [f64; 4] {
-    let (s0, c0) = q[0].sin_cos();
-    let (s1, c1) = q[1].sin_cos();
+    let (s0, c0) = sin_cos(q[0]);
+    let (s1, c1) = sin_cos(q[1]);
     [s0, c0, s1, c1]
 }
 
@@ -120,7 +122,7 @@ impl SliderCrank {
                 bias: Vector6::new(0.0, 0.0, 0.0, 0.0, 0.0, c.l_acc),
             },
             AnklePart::Rotor => {
-                let (s, co) = (self.ratio * c.l + a.motor_offset).sin_cos();
+                let (s, co) = sin_cos(self.ratio * c.l + a.motor_offset);
                 let (x, y) = (self.frame.column(0), self.frame.column(1));
                 let n = self.ratio;
                 RelativeMotion {

@@ -1,5 +1,6 @@
 //! Closed-form knee loop (3.4)-(3.7) and part motions (3.8)-(3.21) written out by hand: the
-//! fast path of the kinematics. The jet evaluation of the parent module (the reference
+//! fast path of the kinematics (sines and cosines from [`crate::spatial::sin_cos`], within a
+//! few ulp of the library's). The jet evaluation of the parent module (the reference
 //! [`crate::mechanism::Coupling::motion`]) is what it is tested against.
 //!
 //! `r = A_z(q) a - b` (planar), `r_q = e_z x A_z(q) a`, `r_qq = -A_z(q) a`; `l = |r|` with
@@ -11,6 +12,7 @@
 
 use super::{KneeDrive, KneePart, NAME};
 use crate::mechanism::{MechanismError, RelativeMotion, MAX_COUPLED};
+use crate::spatial::sin_cos;
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 /// The knee loop closed at one knee angle: screw length, tilt rate and housing frame.
@@ -34,7 +36,7 @@ impl KneeDrive {
     /// Closes the loop (3.4) at knee angle `q` (finite).
     pub(crate) fn solve(&self, q: f64) -> Result<KneeClosure, MechanismError> {
         let p = &self.params;
-        let (s, c) = q.sin_cos();
+        let (s, c) = sin_cos(q);
         let (a, b) = (&p.pin_shank, &p.pivot_thigh);
         let ra = Vector3::new(c * a.x - s * a.y, s * a.x + c * a.y, 0.0);
         let r = ra - Vector3::new(b.x, b.y, 0.0);
@@ -89,7 +91,7 @@ impl KneeDrive {
             ),
             KneePart::Rotor => {
                 let n = self.screw_ratio();
-                let (s, co) = (n * c.l + self.params.motor_offset).sin_cos();
+                let (s, co) = sin_cos(n * c.l + self.params.motor_offset);
                 let (x, y) = (c.rot.column(0), c.rot.column(1));
                 let rot = Matrix3::from_columns(&[
                     x * co + y * s,
