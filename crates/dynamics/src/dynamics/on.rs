@@ -14,7 +14,7 @@
 
 use super::solve::check_pivot;
 use crate::check;
-use crate::kinematics::{body_force, rotor_transform, six};
+use crate::kinematics::{force_of, rotor_transform, six};
 use crate::model::coupling::Mechanism;
 use crate::model::joint::Joint;
 use crate::model::JointModel;
@@ -39,7 +39,8 @@ pub fn forward_pass_1(
 }
 
 /// Dynamic half of the first pass after [`super::forward_dynamics_kinematics`]: body forces
-/// `f_i` (2.56), `M-bar_i = M_i`, `f-bar_i = f_i` and the sub-system member kinematics; for a
+/// `f-bar_i = f_i` (2.56) written to `fbar` only,
+/// `M-bar_i = M_i` and the sub-system member kinematics; for a
 /// spin-invariant rotor `f-bar` holds its parent-frame `C^T (M b - f)` instead
 /// ([`crate::subsystem::rotor::parent_frame_bias`]).
 fn dynamic_first_pass(
@@ -52,11 +53,12 @@ fn dynamic_first_pass(
             data.fbar[i] = rotor_bias(model, data, i, rc, fext)?;
             continue;
         }
-        body_force(model, data, i, fext);
+        let inertia = &body.inertia;
+        let f = force_of(inertia, &data.gravity_body[i], &data.vel[i].ang, fext, i);
         if data.mbar_needed[i] {
-            data.mbar[i] = body.inertia.to_articulated();
+            data.mbar[i] = inertia.to_articulated();
         }
-        data.fbar[i] = data.force[i];
+        data.fbar[i] = f;
     }
     for s in 0..model.subsystems.len() {
         if data.link_rotors[s].is_none() {

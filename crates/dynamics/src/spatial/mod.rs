@@ -23,6 +23,7 @@ mod composite;
 mod force;
 mod inertia;
 mod motion;
+pub(crate) mod plane;
 mod transform;
 mod trig;
 mod vector;

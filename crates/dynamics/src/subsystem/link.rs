@@ -96,7 +96,7 @@ pub(crate) fn backward(
             pivot: d,
         });
     }
-    let x = data.x[link];
+    let x = &data.x[link];
     let b = x.tr_apply_force(&u) + lr.ks;
     let p = (rhs - ax.dot_force(&hat_f)) / d;
     data.u[link] = b;
@@ -109,8 +109,8 @@ pub(crate) fn backward(
     let (head, tail) = data.mbar.split_at_mut(link);
     let (m, out) = (&tail[0], &mut head[parent]);
     match data.plane_axis[link] {
-        Some(axis) => *out += m.tr_transform_axis(axis, &x),
-        None => m.add_tr_transform_to(&x, out),
+        Some(axis) => *out += m.tr_transform_axis(axis, x),
+        None => m.add_tr_transform_to(x, out),
     }
     *out += lr.congruence;
     out.sub_outer(&b, 1.0 / d);

@@ -1,0 +1,76 @@
+//! Products with a rotation `A_kp` of (2.36), general or about a coordinate axis `K` (a
+//! revolute joint about a body axis whose placement is a pure translation): for the latter
+//! only the plane normal to the axis mixes (4 instead of 9 multiplications per vector).
+
+use nalgebra::{Matrix3, Vector3};
+
+/// The products of the first forward recursion with the rotation `A` of a transform.
+pub(crate) trait RotationOps {
+    /// `A v`.
+    fn mul(&self, v: &Vector3<f64>) -> Vector3<f64>;
+    /// `W A^T` (the child's world rotation from the parent's `W`).
+    fn compose_tr(&self, w: &Matrix3<f64>) -> Matrix3<f64>;
+}
+
+/// A general rotation matrix.
+pub(crate) struct General<'a>(pub &'a Matrix3<f64>);
+
+/// A rotation about coordinate axis `K` (`A e_K = e_K`, `A^T e_K = e_K`).
+pub(crate) struct Plane<'a, const K: usize>(pub &'a Matrix3<f64>);
+
+impl RotationOps for General<'_> {
+    #[inline(always)]
+    fn mul(&self, v: &Vector3<f64>) -> Vector3<f64> {
+        self.0 * v
+    }
+    #[inline(always)]
+    fn compose_tr(&self, w: &Matrix3<f64>) -> Matrix3<f64> {
+        w * self.0.transpose()
+    }
+}
+
+impl<const K: usize> RotationOps for Plane<'_, K> {
+    #[inline(always)]
+    fn mul(&self, v: &Vector3<f64>) -> Vector3<f64> {
+        let (a, p, q) = (self.0, (K + 1) % 3, (K + 2) % 3);
+        let mut out = *v;
+        out[p] = a[(p, p)] * v[p] + a[(p, q)] * v[q];
+        out[q] = a[(q, p)] * v[p] + a[(q, q)] * v[q];
+        out
+    }
+    #[inline(always)]
+    fn compose_tr(&self, w: &Matrix3<f64>) -> Matrix3<f64> {
+        let (a, p, q) = (self.0, (K + 1) % 3, (K + 2) % 3);
+        let (cp, cq) = (w.column(p).into_owned(), w.column(q).into_owned());
+        let mut out = *w;
+        out.set_column(p, &(cp * a[(p, p)] + cq * a[(p, q)]));
+        out.set_column(q, &(cp * a[(q, p)] + cq * a[(q, q)]));
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Rotation3;
+
+    /// The plane products against the dense ones for rotations about each coordinate axis.
+    #[test]
+    fn plane_products_match_dense() {
+        let w = *Rotation3::from_euler_angles(0.3, -1.1, 2.0).matrix();
+        let v = Vector3::new(0.7, -0.2, 1.3);
+        let axes = [Vector3::x_axis(), Vector3::y_axis(), Vector3::z_axis()];
+        let a: Vec<Matrix3<f64>> = axes
+            .iter()
+            .map(|ax| *Rotation3::from_axis_angle(ax, 0.9).matrix())
+            .collect();
+        let check = |r: &dyn RotationOps, a: &Matrix3<f64>| {
+            assert!((r.mul(&v) - a * v).amax() < 1e-15);
+            assert!((r.compose_tr(&w) - w * a.transpose()).amax() < 1e-15);
+        };
+        check(&Plane::<0>(&a[0]), &a[0]);
+        check(&Plane::<1>(&a[1]), &a[1]);
+        check(&Plane::<2>(&a[2]), &a[2]);
+        check(&General(&a[1]), &a[1]);
+    }
+}
