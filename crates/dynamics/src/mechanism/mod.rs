@@ -15,6 +15,13 @@
 //!
 //! These definitions are operational: every implementation is checked against central finite
 //! differences of `pose` and `J` along `q_in + qd_in t`.
+//!
+//! The ankle and knee drives have two evaluations: [`Coupling::motion`] propagates jets
+//! ([`jet`]) and is the reference; `relative_cached` (used by the kinematics) is the same
+//! algebra written out in closed form, solves each drive's loop once per kinematics pass into
+//! a small cache ([`cache`]) shared by the drive's parts, and [`crate::Data::coupled_spin_row`]
+//! ([`rows`]) reads the motor rows back from it. Both are tested against each other and
+//! against finite differences.
 
 pub mod ankle;
 pub mod cache;

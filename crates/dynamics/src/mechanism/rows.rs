@@ -5,7 +5,8 @@
 //! [`Data::coupled_spin_row`] is always correct for the `q` it is given; it costs a few
 //! comparisons when the last pass that evaluated coupled kinematics (forward kinematics, the
 //! first phase of forward dynamics, ...) used the same input coordinates, and one loop
-//! closure (no allocation) otherwise.
+//! closure (no allocation) otherwise (also when a model has more than
+//! [`super::cache::LOOP_SLOTS`] drives of one type and the oldest loops were evicted).
 
 use super::{Coupling, MechanismError, MAX_COUPLED};
 use crate::model::{JointModel, Mechanism};
