@@ -171,7 +171,8 @@ fn body_backward(
         }
         Joint::Fixed => data.mbar[i].apply(&data.bias_acc[i]) - data.fbar[i],
         Joint::EulerZxz | Joint::Quaternion => {
-            six_dof_backward(data, i, body.v_index, tau, body.parent.is_some())?
+            let free = matches!(body.joint, Joint::Quaternion);
+            six_dof_backward(data, i, body.v_index, tau, (body.parent.is_some(), free))?
         }
         Joint::Rotor(_) | Joint::Coupled => {
             return Err(DynamicsError::Unsupported(
@@ -199,12 +200,17 @@ fn six_dof_backward(
     i: usize,
     vi: usize,
     tau: &DVector<f64>,
-    propagate: bool,
+    (propagate, free): (bool, bool),
 ) -> Result<Force, DynamicsError> {
     let mbar = data.mbar[i].to_matrix();
     let j = data.jacobian6[i];
-    let u = mbar * j;
-    let d = j.tr_mul(&u);
+    let (u, d) = if free {
+        free_joint_products(&data.mbar[i])
+    } else {
+        let u = mbar * j;
+        let d = j.tr_mul(&u);
+        (u, d)
+    };
     let chol = d.cholesky().ok_or(DynamicsError::NotPositiveDefinite {
         index: vi,
         pivot: d.determinant(),
@@ -228,6 +234,23 @@ fn six_dof_backward(
     data.pi6[i] = pi;
     data.mbar[i] = ArticulatedInertia::from_matrix(&((ia + ia.transpose()) * 0.5));
     Ok(Force::from_vector(&k))
+}
+
+/// `U = M-bar J` and `D = J^T M-bar J` for the free joint's constant `J = [0 E; E 0]`
+/// ([`crate::model::joint::quaternion_jacobian`]): with `M-bar = [A B; B^T C]`,
+/// `U = [B A; C B^T]` and `D = [C B^T; B A]` (block permutations, no products).
+fn free_joint_products(m: &ArticulatedInertia) -> (Matrix6<f64>, Matrix6<f64>) {
+    let (mut u, mut d) = (Matrix6::zeros(), Matrix6::zeros());
+    let bt = m.cross.transpose();
+    u.fixed_view_mut::<3, 3>(0, 0).copy_from(&m.cross);
+    u.fixed_view_mut::<3, 3>(0, 3).copy_from(&m.ang);
+    u.fixed_view_mut::<3, 3>(3, 0).copy_from(&m.lin);
+    u.fixed_view_mut::<3, 3>(3, 3).copy_from(&bt);
+    d.fixed_view_mut::<3, 3>(0, 0).copy_from(&m.lin);
+    d.fixed_view_mut::<3, 3>(0, 3).copy_from(&bt);
+    d.fixed_view_mut::<3, 3>(3, 0).copy_from(&m.cross);
+    d.fixed_view_mut::<3, 3>(3, 3).copy_from(&m.ang);
+    (u, d)
 }
 
 /// Second forward recursion (Algorithm 2.4): `qddot` into `data.ddq` and body accelerations.
@@ -270,4 +293,27 @@ fn body_forward(model: &Model, data: &mut Data, i: usize) {
         }
     };
     data.acc[i] = a + data.bias_acc[i];
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::joint::quaternion_jacobian;
+
+    /// The free joint's block permutations against the dense products `M J`, `J^T M J`.
+    #[test]
+    fn free_joint_products_match_dense() {
+        let l = Matrix6::from_fn(|i, j| {
+            if j <= i {
+                0.4 + ((5 * i + 3 * j) % 7) as f64
+            } else {
+                0.0
+            }
+        });
+        let m = ArticulatedInertia::from_matrix(&(l * l.transpose()));
+        let (j, dense) = (quaternion_jacobian(), m.to_matrix());
+        let (u, d) = free_joint_products(&m);
+        assert_eq!(u, dense * j);
+        assert_eq!(d, j.transpose() * dense * j);
+    }
 }

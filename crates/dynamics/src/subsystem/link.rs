@@ -9,6 +9,7 @@
 //! `k_S = C^T f-hat + sum h + B_S p_S`. No member kinematics (2.77)-(2.79) are formed: the
 //! link's `C-hat`, `J-hat`, `b-hat` are its own `C`, `J`, `b`.
 
+use super::on::add_rigid_congruence;
 use crate::model::joint::Joint;
 use crate::spatial::{ArticulatedInertia, Force, Motion};
 use crate::{Data, DynamicsError, Model};
@@ -25,6 +26,8 @@ pub(crate) struct LinkRotors {
     pub(crate) ks: Force,
     /// `sum s^T K s` of the rotors.
     pub(crate) sks: f64,
+    /// The link has no children outside the sub-system: `M-bar` is its rigid-body inertia.
+    pub(crate) rigid: bool,
 }
 
 /// Per sub-system: its [`LinkRotors`] if it has one coordinate, exactly one member that is not
@@ -43,8 +46,14 @@ pub(crate) fn link_rotor_subsystems(
         if s.v_set.len() != 1 || !plain || body.parent != s.parent {
             return None;
         }
+        let rigid = s
+            .members
+            .iter()
+            .zip(&s.rigid_member)
+            .any(|(&j, &r)| j == link && r);
         let mut out = LinkRotors {
             link,
+            rigid,
             congruence: ArticulatedInertia::zero(),
             ks: Force::zero(),
             sks: 0.0,
@@ -108,9 +117,10 @@ pub(crate) fn backward(
     let k = x.tr_apply_force(&hat_f) + h + b * p;
     let (head, tail) = data.mbar.split_at_mut(link);
     let (m, out) = (&tail[0], &mut head[parent]);
-    match data.plane_axis[link] {
-        Some(axis) => *out += m.tr_transform_axis(axis, x),
-        None => m.add_tr_transform_to(x, out),
+    match (lr.rigid, data.plane_axis[link]) {
+        (true, _) => add_rigid_congruence(&model.bodies[link].inertia, x, out),
+        (false, Some(axis)) => *out += m.tr_transform_axis(axis, x),
+        (false, None) => m.add_tr_transform_to(x, out),
     }
     *out += lr.congruence;
     out.sub_outer(&b, 1.0 / d);
