@@ -7,7 +7,10 @@
 
 use biped_dynamics::dill::{dill, dill_test_state};
 use biped_dynamics::urdf::{load_file, UrdfOptions};
-use biped_dynamics::{forward_dynamics, on, Algorithm, Data, Model};
+use biped_dynamics::{
+    forward_dynamics, forward_dynamics_kinematics, forward_dynamics_solve, on, Algorithm, Data,
+    Model,
+};
 use criterion::{criterion_group, criterion_main, BenchmarkGroup, BenchmarkId, Criterion};
 use nalgebra::DVector;
 use std::hint::black_box;
@@ -105,7 +108,8 @@ fn bench_algorithms(group: &mut BenchmarkGroup<'_, criterion::measurement::WallT
 }
 
 /// Benchmarks the O(n) passes on `case`: `fw1`, `fw1_bw` (the backward pass accumulates into
-/// the articulated inertias the first pass resets, so BW = fw1_bw - fw1) and `fw2` (read-only).
+/// the articulated inertias the first pass resets, so BW = fw1_bw - fw1), `fw2` (read-only),
+/// and the two phases `fd_kinematics` / `fd_solve` of the split forward dynamics.
 fn bench_passes(group: &mut BenchmarkGroup<'_, criterion::measurement::WallTime>, case: &Case) {
     let (m, q, v, tau) = (&case.model, &case.q, &case.v, &case.tau);
     let mut data = Data::new(m);
@@ -121,6 +125,14 @@ fn bench_passes(group: &mut BenchmarkGroup<'_, criterion::measurement::WallTime>
     });
     group.bench_function(BenchmarkId::new("fw2", &case.name), |b| {
         b.iter(|| black_box(on::forward_pass_2(m, &mut data).len()))
+    });
+    // The two-phase API: kinematics alone, and the solve repeated on fixed kinematics.
+    group.bench_function(BenchmarkId::new("fd_kinematics", &case.name), |b| {
+        b.iter(|| black_box(forward_dynamics_kinematics(m, &mut data, q, v).is_ok()))
+    });
+    forward_dynamics_kinematics(m, &mut data, q, v).expect("valid state");
+    group.bench_function(BenchmarkId::new("fd_solve", &case.name), |b| {
+        b.iter(|| black_box(forward_dynamics_solve(m, &mut data, tau, None, Algorithm::On).is_ok()))
     });
 }
 
