@@ -80,8 +80,8 @@ impl ArticulatedInertia {
     #[inline]
     fn tr_transform_plane<const K: usize>(&self, x: &SpatialTransform) -> ArticulatedInertia {
         let a = &x.rot;
-        let ang = axis_congruence::<K>(&self.ang, a);
-        let lin = mirror_upper(&axis_congruence::<K>(&self.lin, a));
+        let ang = sym_axis_congruence::<K>(&self.ang, a);
+        let lin = sym_axis_congruence::<K>(&self.lin, a);
         let cross = axis_congruence::<K>(&self.cross, a);
         shift(&ang, &cross, lin, &x.trans)
     }
@@ -138,7 +138,8 @@ impl AddAssign for ArticulatedInertia {
 }
 
 /// Shift of rotated blocks by `r` (parent coordinates), the `[E 0; -r~ E]` factor of `C`:
-/// `cross' = B - (D r~)^T`, `ang' = A - B r~ - (B r~)^T - r~ D r~` (symmetrized).
+/// `cross' = B - (D r~)^T`, `ang' = A - B r~ - (B r~)^T - r~ D r~`, the symmetric `ang'`
+/// evaluated on its upper triangle only (exactly symmetric result).
 #[inline]
 fn shift(
     ang: &Matrix3<f64>,
@@ -148,9 +149,15 @@ fn shift(
 ) -> ArticulatedInertia {
     let dr = mul_skew(&lin, r);
     let br = mul_skew(cross, r);
-    let rdr = skew_mul(r, &dr);
+    // (r~ M)_ij = (r x M e_j)_i.
+    let rdr = |i: usize, j: usize| {
+        let (a, b) = ((i + 1) % 3, (i + 2) % 3);
+        r[a] * dr[(b, j)] - r[b] * dr[(a, j)]
+    };
+    let e = |i: usize, j: usize| ang[(i, j)] - br[(i, j)] - br[(j, i)] - rdr(i, j);
+    let (m01, m02, m12) = (e(0, 1), e(0, 2), e(1, 2));
     ArticulatedInertia {
-        ang: symmetrize(&(ang - br - br.transpose() - rdr)),
+        ang: Matrix3::new(e(0, 0), m01, m02, m01, e(1, 1), m12, m02, m12, e(2, 2)),
         cross: cross - dr.transpose(),
         lin,
     }
@@ -177,20 +184,34 @@ fn axis_congruence<const K: usize>(m: &Matrix3<f64>, a: &Matrix3<f64>) -> Matrix
     out
 }
 
-/// The symmetric matrix with `m`'s upper triangle.
+/// `A^T S A` for symmetric `S` and a rotation `A` about coordinate axis `K`: the upper
+/// triangle (18 multiplications), mirrored, so the result is exactly symmetric.
 #[inline]
-fn mirror_upper(m: &Matrix3<f64>) -> Matrix3<f64> {
-    Matrix3::new(
-        m[(0, 0)],
-        m[(0, 1)],
-        m[(0, 2)],
-        m[(0, 1)],
-        m[(1, 1)],
-        m[(1, 2)],
-        m[(0, 2)],
-        m[(1, 2)],
-        m[(2, 2)],
-    )
+fn sym_axis_congruence<const K: usize>(m: &Matrix3<f64>, a: &Matrix3<f64>) -> Matrix3<f64> {
+    let (p, q) = ((K + 1) % 3, (K + 2) % 3);
+    let (app, apq, aqp, aqq) = (a[(p, p)], a[(p, q)], a[(q, p)], a[(q, q)]);
+    // Plane columns of T = S A (rows p, q and K).
+    let (tpp, tqp) = (
+        m[(p, p)] * app + m[(p, q)] * aqp,
+        m[(q, p)] * app + m[(q, q)] * aqp,
+    );
+    let (tpq, tqq) = (
+        m[(p, p)] * apq + m[(p, q)] * aqq,
+        m[(q, p)] * apq + m[(q, q)] * aqq,
+    );
+    let (tkp, tkq) = (
+        m[(K, p)] * app + m[(K, q)] * aqp,
+        m[(K, p)] * apq + m[(K, q)] * aqq,
+    );
+    let opq = app * tpq + aqp * tqq;
+    let mut out = Matrix3::zeros();
+    out[(K, K)] = m[(K, K)];
+    (out[(K, p)], out[(p, K)]) = (tkp, tkp);
+    (out[(K, q)], out[(q, K)]) = (tkq, tkq);
+    out[(p, p)] = app * tpp + aqp * tqp;
+    (out[(p, q)], out[(q, p)]) = (opq, opq);
+    out[(q, q)] = apq * tpq + aqq * tqq;
+    out
 }
 
 /// `A^T S A` for symmetric `S`, computing one triangle (exactly symmetric result).
@@ -212,31 +233,6 @@ fn mul_skew(m: &Matrix3<f64>, r: &Vector3<f64>) -> Matrix3<f64> {
     let (r0, r1, r2) = (row(0), row(1), row(2));
     Matrix3::new(
         r0[0], r0[1], r0[2], r1[0], r1[1], r1[2], r2[0], r2[1], r2[2],
-    )
-}
-
-/// `r~ M`: column `j` is `r x m_j`.
-#[inline]
-fn skew_mul(r: &Vector3<f64>, m: &Matrix3<f64>) -> Matrix3<f64> {
-    let col = |j: usize| r.cross(&m.column(j).into_owned());
-    Matrix3::from_columns(&[col(0), col(1), col(2)])
-}
-
-/// `(M + M^T) / 2`, keeping symmetric blocks exactly symmetric.
-#[inline]
-fn symmetrize(m: &Matrix3<f64>) -> Matrix3<f64> {
-    let e = |i: usize, j: usize| 0.5 * (m[(i, j)] + m[(j, i)]);
-    let (m01, m02, m12) = (e(0, 1), e(0, 2), e(1, 2));
-    Matrix3::new(
-        m[(0, 0)],
-        m01,
-        m02,
-        m01,
-        m[(1, 1)],
-        m12,
-        m02,
-        m12,
-        m[(2, 2)],
     )
 }
 
