@@ -21,6 +21,9 @@ use nalgebra::{
 /// Kinematic results are public: after any kinematics or dynamics call, `x[i]` is `C_i` (2.36),
 /// `world_rot[i]` / `world_pos[i]` the pose of body `i` in the world, `vel[i]` its velocity
 /// `[omega; rdot_O]` and `acc[i]` its conventional acceleration, both in body coordinates.
+/// Exception: O(n) forward dynamics skips Harmonic Drive rotors whose inertia is axisymmetric
+/// about their spin axis (their kinematics, and `acc` of sub-system members without children
+/// outside, are left as they were; see [`crate::forward_dynamics_kinematics`]).
 #[derive(Clone, Debug)]
 pub struct Data {
     pub(crate) nq: usize,

@@ -49,8 +49,9 @@ pub fn forward_dynamics<'d>(
 /// (`C_i`), `world_rot[i]` / `world_pos[i]`, `vel[i]`, `bias_acc[i]`, `gravity_body[i]`, and
 /// the mechanisms' loop caches. The kinematics of rotors whose inertia is axisymmetric about
 /// their spin axis are skipped (the O(n) solve works with their constant parent-frame
-/// inertia, [`crate::subsystem::rotor`]): use [`crate::forward_kinematics`] for those. Forces, torques and external wrenches can then be computed from these kinematics
-/// (e.g. contact at the feet, drive torques) and passed to [`forward_dynamics_solve`].
+/// inertia, `subsystem::rotor`): use [`crate::forward_kinematics`] for those. Forces, torques
+/// and external wrenches can then be computed from these kinematics (e.g. contact at the feet,
+/// drive torques) and passed to [`forward_dynamics_solve`].
 pub fn forward_dynamics_kinematics(
     model: &Model,
     data: &mut Data,

@@ -11,6 +11,9 @@
 //! without forming `P_i` or `K_i`. The passes run over the rewired body list (2.9): bodies are
 //! dispatched by joint type with one `match` per body, sub-systems (2.6-2.8) by
 //! [`crate::subsystem`]'s branches, so geared rotors and coupled parts are supported.
+//! Spin-invariant Harmonic Drive rotors enter in their parent's frame without kinematics
+//! (`subsystem::rotor`), and one-DoF sub-systems of one link plus such rotors take the
+//! one-DoF body step with constant rotor terms (`subsystem::link`).
 
 use super::solve::check_pivot;
 use crate::check;
