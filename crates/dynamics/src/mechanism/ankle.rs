@@ -439,6 +439,31 @@ pub struct AnkleLoop {
     trig: ([f64; 2], [f64; 4]),
 }
 
+impl AnkleLoop {
+    /// Closes `crank`'s loop at `(q, qd)` (reusing the sines and cosines of the last closure at
+    /// the same ankle angles) and stores it.
+    #[inline(never)]
+    fn close(
+        &mut self,
+        crank: &SliderCrank,
+        q: [f64; 2],
+        qd: [f64; 2],
+    ) -> Result<&Closure, MechanismError> {
+        if self.trig.0 != q {
+            self.trig = (q, trig(q));
+        }
+        let c = crank.solve(q, self.trig.1, qd)?;
+        Ok(self.slots.store(
+            AnkleKey {
+                id: crank.id,
+                q,
+                qd,
+            },
+            c,
+        ))
+    }
+}
+
 impl Default for AnkleLoop {
     fn default() -> Self {
         Self {
@@ -500,25 +525,13 @@ impl AnkleCoupling {
         let (q, qd) = input_arrays::<2>(NAME, q_in, qd_in)?;
         let cache = cache.get_or_insert_with(AnkleLoop::default);
         let crank = &self.crank;
-        let hit = cache
-            .slots
-            .find(|k| k.id == crank.id && k.q == q && k.qd == qd);
-        if let Some(c) = hit {
-            return Ok(crank.part_motion(self.part, c));
-        }
-        if cache.trig.0 != q {
-            cache.trig = (q, trig(q));
-        }
-        let c = crank.solve(q, cache.trig.1, qd)?;
-        cache.slots.store(
-            AnkleKey {
-                id: crank.id,
-                q,
-                qd,
-            },
-            c,
-        );
-        Ok(crank.part_motion(self.part, &c))
+        let same = |a: [f64; 2], b: [f64; 2]| a[0] == b[0] && a[1] == b[1];
+        let hit = |k: &AnkleKey| k.id == crank.id && same(k.q, q) && same(k.qd, qd);
+        let closure = match cache.slots.find(hit) {
+            Some(c) => c,
+            None => cache.close(crank, q, qd)?,
+        };
+        Ok(crank.part_motion(self.part, closure))
     }
 
     /// Part-frame z row of this part's relative Jacobian at `q_in` (for the rotor the motor

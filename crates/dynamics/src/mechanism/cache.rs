@@ -44,11 +44,11 @@ impl<K: Copy, L: Copy> LoopSlots<K, L> {
             .map(|(_, l)| l)
     }
 
-    /// Stores an entry in place of the oldest one.
+    /// Stores an entry in place of the oldest one and returns the stored value.
     #[inline]
-    pub fn store(&mut self, key: K, value: L) {
+    pub fn store(&mut self, key: K, value: L) -> &L {
         self.last = (self.last + 1) % LOOP_SLOTS;
-        self.slots[self.last] = Some((key, value));
+        &self.slots[self.last].insert((key, value)).1
     }
 }
 

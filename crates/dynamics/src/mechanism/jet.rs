@@ -405,7 +405,10 @@ pub fn input_arrays<const N: usize>(
     qd: &[f64],
 ) -> Result<([f64; N], [f64; N]), MechanismError> {
     match (<[f64; N]>::try_from(q), <[f64; N]>::try_from(qd)) {
-        (Ok(qa), Ok(qda)) if qa.iter().chain(&qda).all(|x| x.is_finite()) => Ok((qa, qda)),
+        // Non-short-circuit `&`: no branch per input.
+        (Ok(qa), Ok(qda)) if qa.iter().chain(&qda).fold(true, |ok, x| ok & x.is_finite()) => {
+            Ok((qa, qda))
+        }
         _ => Err(bad_inputs(mechanism, N, q, qd)),
     }
 }

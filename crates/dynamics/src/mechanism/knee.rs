@@ -369,14 +369,10 @@ impl KneeCoupling {
         let slots = &mut cache.get_or_insert_with(KneeLoopCache::default).0;
         let drive = &self.drive;
         let closure = match slots.find(|&(id, x)| id == drive.id && x == q) {
-            Some(c) => return Ok(drive.part_motion(self.part, c, qd)),
-            None => {
-                let c = drive.solve(q)?;
-                slots.store((drive.id, q), c);
-                c
-            }
+            Some(c) => c,
+            None => slots.store((drive.id, q), drive.solve(q)?),
         };
-        Ok(drive.part_motion(self.part, &closure, qd))
+        Ok(drive.part_motion(self.part, closure, qd))
     }
 
     /// Part-frame z row of this part's relative Jacobian at `q_in` (for the rotor the motor

@@ -144,10 +144,11 @@ impl SliderCrank {
         }
     }
 
-    /// The coupler rod (origin at the nut ball `m.pos`, z along `u = (F - N) / L`,
-    /// `x = normalize(e_y x u)`): body angular velocity `(-y.udot, x.udot, (e_y x udot).y / n)`
-    /// with `n = |e_y x u|`, linear velocity `(x, y, z) . e ldot`, and their component-wise
-    /// time derivatives at `qdd = 0`.
+    /// The coupler rod (origin at the nut ball, z along `u = (F - N) / L`,
+    /// `x = (e_y x u) / n`, `n = |e_y x u|`, so `x_y = 0`): body angular velocity
+    /// `(-y.udot, x.udot, kappa x.udot)` with `kappa = u_y / n` (from `(e_y x udot).y / n`,
+    /// `y = u x x`), linear velocity `(x, y, z) . e ldot`, and their component-wise time
+    /// derivatives at `qdd = 0` (`ndot = x.(e_y x udot)`, `kappadot = (udot_y - kappa ndot) / n`).
     fn rod_motion(&self, c: &Closure) -> RelativeMotion {
         let a = &self.act;
         let e = &a.screw_axis;
@@ -156,33 +157,37 @@ impl SliderCrank {
         let u = (c.foot - nut) * inv;
         let u_dot = (c.foot_dot - e * c.l_dot) * inv;
         let u_acc = (c.foot_acc - e * c.l_acc) * inv;
-        let w = ey_cross(&u);
-        let n_inv = 1.0 / w.norm();
-        let x = w * n_inv;
+        let n_inv = 1.0 / (u.z * u.z + u.x * u.x).sqrt();
+        let x = Vector3::new(u.z * n_inv, 0.0, -u.x * n_inv);
         let y = u.cross(&x);
-        let omega =
-            |v: &Vector3<f64>| Vector3::new(-y.dot(v), x.dot(v), (v.z * y.x - v.x * y.z) * n_inv);
-        let lin = Vector3::new(x.dot(e), y.dot(e), u.dot(e));
+        let kappa = u.y * n_inv;
+        let x_dot_v = |v: &Vector3<f64>| x.x * v.x + x.z * v.z;
+        let lin = Vector3::new(x_dot_v(e), y.dot(e), u.dot(e));
         let column = |j: usize| {
-            let om = omega(&((c.foot_q[j] - e * c.l_q[j]) * inv));
-            let v = lin * c.l_q[j];
-            Vector6::new(om.x, om.y, om.z, v.x, v.y, v.z)
+            let v = (c.foot_q[j] - e * c.l_q[j]) * inv;
+            let (wy, l) = (x_dot_v(&v), lin * c.l_q[j]);
+            Vector6::new(-y.dot(&v), wy, kappa * wy, l.x, l.y, l.z)
         };
-        let om = omega(&u_dot);
-        let x_dot = y * om.z - u * om.y;
-        let y_dot = u * om.x - x * om.z;
-        let n_dot = x.dot(&ey_cross(&u_dot));
-        let ang = Vector3::new(
-            -y_dot.dot(&u_dot) - y.dot(&u_acc),
-            x_dot.dot(&u_dot) + x.dot(&u_acc),
-            (ey_cross(&u_acc).dot(&y) + ey_cross(&u_dot).dot(&y_dot) - om.z * n_dot) * n_inv,
-        );
+        let (wx, wy) = (-y.dot(&u_dot), x_dot_v(&u_dot));
+        let wz = kappa * wy;
+        let x_dot = y * wz - u * wy;
+        let y_dot = u * wx - x * wz;
+        let n_dot = x.x * u_dot.z - x.z * u_dot.x;
+        let kappa_dot = (u_dot.y - kappa * n_dot) * n_inv;
+        let wy_dot = x_dot.dot(&u_dot) + x_dot_v(&u_acc);
         let lb = Vector3::new(x_dot.dot(e), y_dot.dot(e), u_dot.dot(e)) * c.l_dot + lin * c.l_acc;
         RelativeMotion {
             rot: Matrix3::from_columns(&[x, y, u]),
             pos: nut,
             jacobian: [column(0), column(1), Vector6::zeros()],
-            bias: Vector6::new(ang.x, ang.y, ang.z, lb.x, lb.y, lb.z),
+            bias: Vector6::new(
+                -y_dot.dot(&u_dot) - y.dot(&u_acc),
+                wy_dot,
+                kappa_dot * wy + kappa * wy_dot,
+                lb.x,
+                lb.y,
+                lb.z,
+            ),
         }
     }
 }
