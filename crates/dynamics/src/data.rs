@@ -85,6 +85,9 @@ pub struct Data {
     pub(crate) rotor_frame: Vec<SpatialTransform>,
     /// Spin-invariant `C^T M C`, `B_S` row and `M_S` entry of axisymmetric rotor members (2.76).
     pub(crate) rotor_constant: Vec<Option<RotorConstant>>,
+    /// Per body: a fixed-joint leaf without inertia (a sole or tool frame): its `M-bar` stays
+    /// zero, so the O(n) backward pass only propagates its force.
+    pub(crate) massless_leaf: Vec<bool>,
     /// Per sub-system: the constants of a one-link-with-rotors sub-system ([`crate::subsystem::link`]).
     pub(crate) link_rotors: Vec<Option<LinkRotors>>,
     /// Per body: whether the O(n) passes read `mbar` (false for rigid sub-system members, whose
@@ -120,9 +123,13 @@ pub struct Data {
 }
 
 /// Per body: false for rigid sub-system members (see [`Data::mbar_needed`]), except the link
-/// of a link-with-rotors sub-system, whose step reads `mbar`.
-fn mbar_needed(model: &Model, rotor_constant: &[Option<RotorConstant>]) -> Vec<bool> {
-    let mut needed = vec![true; model.nbodies()];
+/// of a link-with-rotors sub-system, whose step reads `mbar`, and for massless leaves.
+fn mbar_needed(
+    model: &Model,
+    rotor_constant: &[Option<RotorConstant>],
+    massless_leaf: &[bool],
+) -> Vec<bool> {
+    let mut needed: Vec<bool> = massless_leaf.iter().map(|m| !m).collect();
     for sub in &model.subsystems {
         for (&j, &rigid) in sub.members.iter().zip(&sub.rigid_member) {
             needed[j] = !rigid;
@@ -135,6 +142,21 @@ fn mbar_needed(model: &Model, rotor_constant: &[Option<RotorConstant>]) -> Vec<b
         needed[lr.link] = true;
     }
     needed
+}
+
+/// Per body: fixed joint, zero inertia and no children (see [`Data::massless_leaf`]).
+fn massless_leaves(model: &Model) -> Vec<bool> {
+    let mut leaf = vec![true; model.nbodies()];
+    for p in model.bodies.iter().filter_map(|b| b.parent) {
+        leaf[p] = false;
+    }
+    let zero = |b: &Body| b.inertia.to_articulated() == ArticulatedInertia::zero();
+    model
+        .bodies
+        .iter()
+        .zip(leaf)
+        .map(|(b, leaf)| leaf && matches!(b.joint, Joint::Fixed) && zero(b))
+        .collect()
 }
 
 /// The coordinate axis of a revolute (or rotor) joint with an unrotated placement.
@@ -176,6 +198,7 @@ impl Data {
         }
         let rotor_frames = crate::kinematics::rotor_frames(model);
         let rotor_constant = constant_congruences(model, &rotor_frames);
+        let massless_leaf = massless_leaves(model);
         let mut col_offset = vec![0; n + 1];
         for (i, b) in model.bodies.iter().enumerate() {
             col_offset[i + 1] = col_offset[i] + b.v_set.len();
@@ -210,7 +233,8 @@ impl Data {
             sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
             link_rotors: link_rotor_subsystems(model, &rotor_constant),
-            mbar_needed: mbar_needed(model, &rotor_constant),
+            mbar_needed: mbar_needed(model, &rotor_constant, &massless_leaf),
+            massless_leaf,
             rotor_constant,
             rotor_frame: rotor_frames,
             plane_axis: model.bodies.iter().map(plane_axis).collect(),

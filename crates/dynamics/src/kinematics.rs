@@ -383,7 +383,7 @@ pub(crate) fn body_force(model: &Model, data: &mut Data, i: usize, fext: Option<
 }
 
 /// `f_ext,i + f_g,i - h_i` of (2.56) from gravity `g` and angular velocity `w` (body axes).
-#[inline]
+#[inline(always)]
 pub(crate) fn force_of(
     inertia: &RigidInertia,
     g: &Vector3<f64>,

@@ -172,6 +172,7 @@ fn body_backward(
             data.p1[i] = p;
             k
         }
+        Joint::Fixed if data.massless_leaf[i] => Force::zero() - data.fbar[i],
         Joint::Fixed => data.mbar[i].apply(&data.bias_acc[i]) - data.fbar[i],
         Joint::EulerZxz | Joint::Quaternion => {
             let free = matches!(body.joint, Joint::Quaternion);
@@ -187,6 +188,7 @@ fn body_backward(
         let x = &data.x[i];
         let (head, tail) = data.mbar.split_at_mut(i);
         match data.plane_axis[i] {
+            _ if data.massless_leaf[i] => {} // M-bar_i = 0: nothing to add.
             Some(k) => head[p] += tail[0].tr_transform_axis(k, x),
             None => tail[0].add_tr_transform_to(x, &mut head[p]),
         }

@@ -1,6 +1,7 @@
 //! Lola-like test models (needs `mod loop_support;` beside it): branched revolute chains on a floating base whose links carry
 //! Harmonic Drive rotors (3.1)-(3.2) mounted on the link's carrier (the parent), as in the
-//! Lola drive trains; most rotors axisymmetric (the spin-invariant fast path), some not.
+//! Lola drive trains; most rotors axisymmetric (the spin-invariant fast path), some not; some
+//! links carry massless fixed frames (sole-like leaves).
 #![allow(dead_code)]
 
 use crate::loop_support::{random_axis, random_inertia, random_pose, rng};
@@ -85,6 +86,13 @@ pub fn harmonic_drive_chain(seed: u64, n: usize) -> Model {
             inertia,
         ))
         .unwrap();
+        if rng.random_range(0..3) == 0 {
+            // A massless tool/sole frame on the link (a leaf; wrenches may act on it).
+            let (pose, zero) = (random_pose(&mut rng), RigidInertia::zero());
+            let joint = JointModel::Fixed;
+            b.add_body(spec(format!("frame{k}"), Some(link), joint, pose, zero))
+                .unwrap();
+        }
         links.push(link);
     }
     b.build().unwrap()
