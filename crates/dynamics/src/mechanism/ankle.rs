@@ -29,12 +29,15 @@
 //! `x = normalize(s_y x z)`, `y = z x x` (a rod between two ball joints has no physical roll;
 //! this choice equals the screw frame when the rod is parallel to the screw).
 
+mod cached;
 mod closure;
 
-use super::cache::{instance_id, LoopSlots};
+pub use cached::AnkleLoop;
+
+use super::cache::instance_id;
 use super::jet::{bad_param, input_arrays, seed_inputs, FrameJet, SJet, VJet};
-use super::{CoupledMotion, Coupling, MechanismError, RelativeMotion};
-use closure::{trig, Closure};
+use super::{CoupledMotion, Coupling, MechanismError};
+use closure::trig;
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 use std::f64::consts::PI;
 use std::ops::{Add, Mul, Sub};
@@ -428,59 +431,6 @@ impl SliderCrank {
     }
 }
 
-/// Closed slider-crank loops of the last kinematics pass, keyed by crank identity and exact
-/// inputs (see [`super::cache`]): the three parts (nut, rotor, rod) of one actuator share one
-/// loop closure (3.23)-(3.29), the two actuators of one ankle share the sines and cosines, and
-/// [`crate::Data::coupled_spin_row`] reads the motor rows back.
-#[derive(Debug, Clone, Copy)]
-pub struct AnkleLoop {
-    slots: LoopSlots<AnkleKey, Closure>,
-    /// Ankle angles of the last loop closure and their sines and cosines ([`trig`]).
-    trig: ([f64; 2], [f64; 4]),
-}
-
-impl AnkleLoop {
-    /// Closes `crank`'s loop at `(q, qd)` (reusing the sines and cosines of the last closure at
-    /// the same ankle angles) and stores it.
-    #[inline(never)]
-    fn close(
-        &mut self,
-        crank: &SliderCrank,
-        q: [f64; 2],
-        qd: [f64; 2],
-    ) -> Result<&Closure, MechanismError> {
-        if self.trig.0 != q {
-            self.trig = (q, trig(q));
-        }
-        let c = crank.solve(q, self.trig.1, qd)?;
-        Ok(self.slots.store(
-            AnkleKey {
-                id: crank.id,
-                q,
-                qd,
-            },
-            c,
-        ))
-    }
-}
-
-impl Default for AnkleLoop {
-    fn default() -> Self {
-        Self {
-            slots: LoopSlots::default(),
-            trig: ([f64::NAN; 2], [0.0; 4]),
-        }
-    }
-}
-
-/// Identity of a closed loop: the crank's construction identity and its exact inputs.
-#[derive(Debug, Clone, Copy)]
-struct AnkleKey {
-    id: u64,
-    q: [f64; 2],
-    qd: [f64; 2],
-}
-
 /// One part of one slider-crank of an [`AnkleDrive`] as a [`Coupling`] (inputs: flexion,
 /// adduction).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -502,65 +452,6 @@ impl AnkleCoupling {
     }
 }
 
-impl AnkleCoupling {
-    /// Same result as [`Coupling::motion`], reusing `cache` when it holds this part's
-    /// slider-crank closed at exactly the same `(q_in, qd_in)`, else closing the loop and
-    /// storing it in `cache` for the actuator's next part.
-    pub fn motion_cached(
-        &self,
-        q_in: &[f64],
-        qd_in: &[f64],
-        cache: &mut Option<AnkleLoop>,
-    ) -> Result<CoupledMotion, MechanismError> {
-        Ok(self.relative_cached(q_in, qd_in, cache)?.to_coupled())
-    }
-
-    /// [`Self::motion_cached`] as a [`RelativeMotion`] (no quaternion conversion).
-    pub fn relative_cached(
-        &self,
-        q_in: &[f64],
-        qd_in: &[f64],
-        cache: &mut Option<AnkleLoop>,
-    ) -> Result<RelativeMotion, MechanismError> {
-        let (q, qd) = input_arrays::<2>(NAME, q_in, qd_in)?;
-        let cache = cache.get_or_insert_with(AnkleLoop::default);
-        let crank = &self.crank;
-        let same = |a: [f64; 2], b: [f64; 2]| a[0] == b[0] && a[1] == b[1];
-        let hit = |k: &AnkleKey| k.id == crank.id && same(k.q, q) && same(k.qd, qd);
-        let closure = match cache.slots.find(hit) {
-            Some(c) => c,
-            None => cache.close(crank, q, qd)?,
-        };
-        Ok(crank.part_motion(self.part, closure))
-    }
-
-    /// Part-frame z row of this part's relative Jacobian at `q_in` (for the rotor the motor
-    /// row `N_screw dl/dq`, (3.22), (3.32)), from `cache` when it holds this crank closed at
-    /// exactly `q_in`, else from a fresh loop closure.
-    pub fn spin_row_cached(
-        &self,
-        q_in: &[f64],
-        cache: Option<&AnkleLoop>,
-    ) -> Result<[f64; 2], MechanismError> {
-        let (q, _) = input_arrays::<2>(NAME, q_in, &[0.0; 2])?;
-        let crank = &self.crank;
-        let hit = cache.and_then(|c| c.slots.find(|k| k.id == crank.id && k.q == q));
-        let fresh;
-        let closure = match hit {
-            Some(c) => c,
-            None => {
-                fresh = crank.solve(q, trig(q), [0.0; 2])?;
-                &fresh
-            }
-        };
-        if self.part == AnklePart::Rotor {
-            return Ok(closure.l_q.map(|x| crank.ratio * x));
-        }
-        let m = crank.part_motion(self.part, closure);
-        Ok([m.jacobian[0][2], m.jacobian[1][2]])
-    }
-}
-
 impl Coupling for AnkleCoupling {
     fn n_inputs(&self) -> usize {
         2
@@ -570,52 +461,5 @@ impl Coupling for AnkleCoupling {
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
         let q = seed_inputs::<2>(NAME, q_in, qd_in)?;
         Ok(self.crank.frame(self.part, &q)?.motion())
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The cached fast path equals the jet reference part by part (to round-off), across
-    /// actuators (misses on a different crank) and inputs (misses on different `q` or `qd`);
-    /// hits return the stored loop bit for bit; the spin rows equal the reference's z rows.
-    #[test]
-    fn cached_motion_equals_motion() {
-        let drive = AnkleDrive::new(AnkleDriveParams::default()).expect("default drive");
-        let mut cache = None;
-        for (q, qd) in [
-            ([0.1, -0.05], [0.3, 0.2]),
-            ([0.1, -0.05], [0.3, 0.1]),
-            ([0.0, 0.1], [0.0, 0.0]),
-        ] {
-            for act in 0..2 {
-                for part in [AnklePart::Nut, AnklePart::Rotor, AnklePart::Rod] {
-                    let c = drive.part(act, part).expect("part");
-                    let fast = c.relative_cached(&q, &qd, &mut cache).expect("cached");
-                    let again = c.relative_cached(&q, &qd, &mut cache).expect("hit");
-                    assert_eq!(fast, again);
-                    let slow = RelativeMotion::from_coupled(&c.motion(&q, &qd).expect("motion"));
-                    // The rotor angle N_screw l (N_screw ~ 1257 rad/m) amplifies the round-off of l.
-                    assert!((fast.rot - slow.rot).amax() < 1e-13);
-                    assert!((fast.pos - slow.pos).amax() < 1e-15);
-                    assert!((fast.bias - slow.bias).amax() < 1e-11 * (1.0 + slow.bias.amax()));
-                    for (a, b) in fast.jacobian.iter().zip(&slow.jacobian) {
-                        assert!((a - b).amax() < 1e-12 * (1.0 + b.amax()));
-                    }
-                    for cached in [cache.as_ref(), None] {
-                        let row = c.spin_row_cached(&q, cached).expect("row");
-                        for (r, col) in row.iter().zip(&slow.jacobian) {
-                            assert!((r - col[2]).abs() < 1e-12 * (1.0 + col[2].abs()));
-                        }
-                    }
-                }
-            }
-        }
-        let c = drive.part(0, AnklePart::Rod).expect("part");
-        assert!(c
-            .relative_cached(&[f64::NAN, 0.0], &[0.0; 2], &mut cache)
-            .is_err());
-        assert!(c.spin_row_cached(&[0.0], cache.as_ref()).is_err());
     }
 }

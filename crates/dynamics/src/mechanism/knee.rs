@@ -33,12 +33,14 @@
 //! the spin rows (tested equal to round-off); (3.6)'s numerator is read as
 //! `rdot.rdot + r.rddot - ldot^2` (the extracted text drops the square).
 
+mod cached;
 mod closure;
 
-use super::cache::{instance_id, LoopSlots};
+pub use cached::KneeLoopCache;
+
+use super::cache::instance_id;
 use super::jet::{bad_param, input_arrays, seed_inputs, FrameJet, SJet, VJet};
-use super::{CoupledMotion, Coupling, MechanismError, RelativeMotion};
-use closure::KneeClosure;
+use super::{CoupledMotion, Coupling, MechanismError};
 use nalgebra::{Vector2, Vector3};
 use std::f64::consts::PI;
 use std::ops::Add;
@@ -329,12 +331,6 @@ struct KneeLoop {
     length: SJet<1>,
 }
 
-/// Closed knee loops of the last kinematics pass, keyed by drive identity and exact knee angle (see
-/// [`super::cache`]): the three parts (housing, nut, rotor) of one drive share one loop
-/// closure (3.4)-(3.7), and [`crate::Data::coupled_spin_row`] reads the motor rows back.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct KneeLoopCache(LoopSlots<(u64, f64), KneeClosure>);
-
 /// One part of a [`KneeDrive`] as a [`Coupling`] (input: the knee angle).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct KneeCoupling {
@@ -353,96 +349,5 @@ impl Coupling for KneeCoupling {
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
         let [q] = seed_inputs::<1>(NAME, q_in, qd_in)?;
         Ok(self.drive.frame(self.part, q)?.motion())
-    }
-}
-
-impl KneeCoupling {
-    /// [`Coupling::motion`] as a [`RelativeMotion`], reusing `cache` when it holds this drive's
-    /// loop closed at exactly the same `(q_in, qd_in)`, else closing it and storing it.
-    pub fn relative_cached(
-        &self,
-        q_in: &[f64],
-        qd_in: &[f64],
-        cache: &mut Option<KneeLoopCache>,
-    ) -> Result<RelativeMotion, MechanismError> {
-        let ([q], [qd]) = input_arrays::<1>(NAME, q_in, qd_in)?;
-        let slots = &mut cache.get_or_insert_with(KneeLoopCache::default).0;
-        let drive = &self.drive;
-        let closure = match slots.find(|&(id, x)| id == drive.id && x == q) {
-            Some(c) => c,
-            None => slots.store((drive.id, q), drive.solve(q)?),
-        };
-        Ok(drive.part_motion(self.part, closure, qd))
-    }
-
-    /// Part-frame z row of this part's relative Jacobian at `q_in` (for the rotor the motor
-    /// row `N_screw dl/dq`, (3.3), (3.5)), from `cache` when it holds this drive closed at
-    /// exactly `q_in`, else from a fresh loop closure.
-    pub fn spin_row_cached(
-        &self,
-        q_in: &[f64],
-        cache: Option<&KneeLoopCache>,
-    ) -> Result<f64, MechanismError> {
-        let ([q], _) = input_arrays::<1>(NAME, q_in, &[0.0])?;
-        let drive = &self.drive;
-        let hit = cache.and_then(|c| c.0.find(|&(id, x)| id == drive.id && x == q));
-        let c = match hit {
-            Some(c) => *c,
-            None => drive.solve(q)?,
-        };
-        // Only the rotor spins about its z axis ((3.5): N_screw dl/dq); the housing and the
-        // nut turn about the knee axis, their y axis.
-        Ok(match self.part {
-            KneePart::Rotor => drive.screw_ratio() * c.l_q,
-            KneePart::Housing | KneePart::Nut => 0.0,
-        })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The cached fast path equals the jet reference part by part (to round-off), across drives
-    /// (tilt on and off: misses on a different drive) and inputs; hits are bit-for-bit repeats;
-    /// spin rows equal the reference's z rows with and without the cache.
-    #[test]
-    fn cached_relative_equals_motion() {
-        let tilt = KneeDrive::new(KneeDriveParams::default()).expect("default drive");
-        let fixed = KneeDrive::new(KneeDriveParams {
-            screw_tilt: false,
-            ..KneeDriveParams::default()
-        })
-        .expect("fixed-axis drive");
-        let mut cache = None;
-        for (q, qd) in [(0.4, 0.3), (0.4, -0.2), (1.1, 0.0), (-0.05, 2.0)] {
-            for drive in [tilt, fixed] {
-                for part in [KneePart::Housing, KneePart::Nut, KneePart::Rotor] {
-                    let c = drive.part(part);
-                    let fast = c.relative_cached(&[q], &[qd], &mut cache).expect("cached");
-                    let again = c.relative_cached(&[q], &[qd], &mut cache).expect("hit");
-                    assert_eq!(fast, again);
-                    let slow =
-                        RelativeMotion::from_coupled(&c.motion(&[q], &[qd]).expect("motion"));
-                    // The rotor angle N_screw l (N_screw ~ 1257 rad/m) amplifies the round-off of l.
-                    assert!((fast.rot - slow.rot).amax() < 1e-13);
-                    assert!((fast.pos - slow.pos).amax() < 1e-15);
-                    let tol = 1e-12 * (1.0 + slow.bias.amax());
-                    assert!(
-                        (fast.bias - slow.bias).amax() < tol,
-                        "{part:?} {fast:?} {slow:?}"
-                    );
-                    let (a, b) = (fast.jacobian[0], slow.jacobian[0]);
-                    assert!((a - b).amax() < 1e-12 * (1.0 + b.amax()), "{part:?}");
-                    for cached in [cache.as_ref(), None] {
-                        let row = c.spin_row_cached(&[q], cached).expect("row");
-                        assert!((row - b[2]).abs() < 1e-12 * (1.0 + b[2].abs()));
-                    }
-                }
-            }
-        }
-        let c = tilt.part(KneePart::Nut);
-        assert!(c.relative_cached(&[f64::NAN], &[0.0], &mut cache).is_err());
-        assert!(c.spin_row_cached(&[0.1, 0.2], cache.as_ref()).is_err());
     }
 }
