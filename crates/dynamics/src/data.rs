@@ -85,6 +85,8 @@ pub struct Data {
     pub(crate) rotor_frame: Vec<SpatialTransform>,
     /// Spin-invariant `C^T M C`, `B_S` row and `M_S` entry of axisymmetric rotor members (2.76).
     pub(crate) rotor_constant: Vec<Option<RotorConstant>>,
+    /// Bodies with a [`Data::rotor_constant`], ascending.
+    pub(crate) fast_rotors: Vec<usize>,
     /// Per body: a fixed-joint leaf without inertia (a sole or tool frame): its `M-bar` stays
     /// zero, so the O(n) backward pass only propagates its force.
     pub(crate) massless_leaf: Vec<bool>,
@@ -235,6 +237,7 @@ impl Data {
             link_rotors: link_rotor_subsystems(model, &rotor_constant),
             mbar_needed: mbar_needed(model, &rotor_constant, &massless_leaf),
             massless_leaf,
+            fast_rotors: (0..n).filter(|&i| rotor_constant[i].is_some()).collect(),
             rotor_constant,
             rotor_frame: rotor_frames,
             plane_axis: model.bodies.iter().map(plane_axis).collect(),

@@ -51,17 +51,29 @@ fn dynamic_first_pass(
     data: &mut Data,
     fext: Option<&[Wrench]>,
 ) -> Result<(), DynamicsError> {
-    for (i, body) in model.bodies.iter().enumerate() {
+    // Slices zipped (no per-body bounds checks); rotors are filled by the second loop.
+    let bodies = model
+        .bodies
+        .iter()
+        .zip(&data.rotor_constant)
+        .zip(&data.mbar_needed);
+    let state = data.gravity_body.iter().zip(&data.vel);
+    let out = data.mbar.iter_mut().zip(data.fbar.iter_mut());
+    for (i, (((body, rc), &needed), ((g, vel), (mbar, fbar)))) in
+        bodies.zip(state.zip(out)).enumerate()
+    {
+        if rc.is_none() {
+            *fbar = force_of(&body.inertia, g, &vel.ang, fext, i);
+            if needed {
+                *mbar = body.inertia.to_articulated();
+            }
+        }
+    }
+    for k in 0..data.fast_rotors.len() {
+        let i = data.fast_rotors[k];
         if let Some(rc) = &data.rotor_constant[i] {
             data.fbar[i] = rotor_bias(model, data, i, rc, fext)?;
-            continue;
         }
-        let inertia = &body.inertia;
-        let f = force_of(inertia, &data.gravity_body[i], &data.vel[i].ang, fext, i);
-        if data.mbar_needed[i] {
-            data.mbar[i] = inertia.to_articulated();
-        }
-        data.fbar[i] = f;
     }
     for s in 0..model.subsystems.len() {
         if data.link_rotors[s].is_none() {
