@@ -64,10 +64,10 @@ pub struct Rmrc {
     n: usize,
     /// `B = J W^-1 J^T (+ damping)`, then its Cholesky factor `L` (lower triangle).
     b: DMatrix<f64>,
-    /// `J^T` (n x m_max): row i of J is a contiguous column.
-    jt: DMatrix<f64>,
-    /// Columns `W^-1 J_i^T`.
-    wjt: DMatrix<f64>,
+    /// `J D^-1 u` of a rank-one weight (m_max).
+    jdu: DVector<f64>,
+    /// `J^T lambda` (n).
+    g: DVector<f64>,
     z: DVector<f64>,
     lambda: DVector<f64>,
     /// Reciprocal diagonal of the Cholesky factor.
@@ -85,8 +85,8 @@ impl Rmrc {
             m_max,
             n,
             b: DMatrix::zeros(m_max, m_max),
-            jt: DMatrix::zeros(n, m_max),
-            wjt: DMatrix::zeros(n, m_max),
+            jdu: DVector::zeros(m_max),
+            g: DVector::zeros(n),
             z: DVector::zeros(n),
             lambda: DVector::zeros(m_max),
             inv_diag: DVector::zeros(m_max),
@@ -155,27 +155,27 @@ impl Rmrc {
         Ok(())
     }
 
-    /// `lambda` from the factor and `qdot = W^-1 J^T lambda + z` (Alg. 4.3 lines 3-5).
+    /// `lambda` from the factor and `qdot = W^-1 (J^T lambda) + z` (Alg. 4.3 lines 3-5);
+    /// `J` is read by contiguous columns, `W^-1` applied once to the n-vector `J^T lambda`.
     fn back_substitute(
         &mut self,
         p: &RmrcProblem<'_>,
         qdot: &mut DVector<f64>,
     ) -> Result<(), IkError> {
-        let (m, n) = (p.rows, self.n);
-        for i in 0..m {
-            let ji = &self.jt.as_slice()[i * n..(i + 1) * n];
-            self.lambda[i] = p.xdot[i] - dot(ji, self.z.as_slice());
+        let m = p.rows;
+        let lambda = &mut self.lambda.as_mut_slice()[..m];
+        lambda.copy_from_slice(&p.xdot.as_slice()[..m]);
+        for (jc, zc) in columns(p.jacobian, m).zip(self.z.iter()) {
+            axpy(-zc, jc, lambda);
         }
         let (b, inv) = (self.b.as_slice(), self.inv_diag.as_slice());
-        cholesky_lower_solve(b, self.m_max, m, inv, self.lambda.as_mut_slice());
-        qdot.copy_from(&self.z);
-        let out = qdot.as_mut_slice();
-        for k in 0..m {
-            let (l, wk) = (self.lambda[k], &self.wjt.as_slice()[k * n..(k + 1) * n]);
-            for (o, w) in out.iter_mut().zip(wk) {
-                *o += l * w;
-            }
+        cholesky_lower_solve(b, self.m_max, m, inv, lambda);
+        for (g, jc) in self.g.iter_mut().zip(columns(p.jacobian, m)) {
+            *g = dot(jc, lambda);
         }
+        p.weight
+            .apply_inverse(self.g.as_slice(), qdot.as_mut_slice());
+        *qdot += &self.z;
         check_finite("qdot", qdot.as_slice())
     }
 
@@ -197,28 +197,38 @@ impl Rmrc {
         }
     }
 
-    /// `J^T`, columns `W^-1 J_i^T` and the lower triangle of `B = J W^-1 J^T`.
+    /// Lower triangle of `B = J W^-1 J^T` (column k holds `B[k..m, k]` contiguously) as
+    /// `sum_c D^-1_cc J_c J_c^T - (J D^-1 u)(J D^-1 u)^T / c` over the contiguous columns
+    /// `J_c` of J (7.14 applied to the whole product: no `J^T` or `W^-1 J^T` is formed; a gemm
+    /// call would allocate packing buffers every cycle).
     fn assemble(&mut self, j: &DMatrix<f64>, m: usize, w: &Weight) -> Result<(), IkError> {
         let n = self.n;
         w.validate(n)?;
-        for c in 0..n {
-            for i in 0..m {
-                self.jt[(c, i)] = j[(i, c)];
-            }
-        }
-        let (jt, wjt) = (self.jt.as_slice(), self.wjt.as_mut_slice());
-        let scratch = self.scratch.as_mut_slice();
-        w.apply_inverse_columns(n, &jt[..m * n], &mut wjt[..m * n], scratch);
-        // lower triangle of B (column k holds B[k..m, k] contiguously); plain dots, because
-        // a gemm call would allocate packing buffers every cycle
+        let (dinv, du) = self.scratch.as_mut_slice().split_at_mut(n);
+        let c = w.inverse_parts(dinv, du);
         let (mm, b) = (self.m_max, self.b.as_mut_slice());
         for k in 0..m {
-            let wk = &self.wjt.as_slice()[k * n..(k + 1) * n];
-            for i in k..m {
-                b[k * mm + i] = dot(&jt[i * n..(i + 1) * n], wk);
+            b[k * mm + k..k * mm + m].fill(0.0);
+        }
+        for (jc, d) in columns(j, m).zip(dinv.iter()) {
+            for k in 0..m {
+                axpy(d * jc[k], &jc[k..], &mut b[k * mm + k..k * mm + m]);
             }
         }
-        check_finite("W^-1 J^T", &self.wjt.as_slice()[..m * n])
+        if c > 0.0 {
+            let v = &mut self.jdu.as_mut_slice()[..m];
+            v.fill(0.0);
+            for (jc, e) in columns(j, m).zip(du.iter()) {
+                axpy(*e, jc, v);
+            }
+            for k in 0..m {
+                axpy(-v[k] / c, &v[k..], &mut b[k * mm + k..k * mm + m]);
+            }
+        }
+        for k in 0..m {
+            check_finite("J W^-1 J^T", &b[k * mm + k..k * mm + m])?;
+        }
+        Ok(())
     }
 
     /// Validates the shapes of a problem and the output.
@@ -308,6 +318,22 @@ fn cholesky_lower_solve(b: &[f64], mm: usize, m: usize, inv: &[f64], x: &mut [f6
     for i in (0..m).rev() {
         let below = &b[i * mm + i + 1..i * mm + m];
         x[i] = (x[i] - dot(below, &x[i + 1..m])) * inv[i];
+    }
+}
+
+/// The first `m` entries of each column of `j` (contiguous in nalgebra's column-major storage).
+#[inline]
+fn columns(j: &DMatrix<f64>, m: usize) -> impl Iterator<Item = &[f64]> {
+    j.as_slice()
+        .chunks_exact(j.nrows().max(1))
+        .map(move |c| &c[..m])
+}
+
+/// `y += a x` on equally long slices.
+#[inline]
+fn axpy(a: f64, x: &[f64], y: &mut [f64]) {
+    for (yi, xi) in y.iter_mut().zip(x) {
+        *yi += a * xi;
     }
 }
 

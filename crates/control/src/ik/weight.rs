@@ -137,21 +137,14 @@ impl Weight {
         }
     }
 
-    /// `out_k = W^-1 x_k` for the consecutive length-`n` columns `x_k` of `x` (same as
-    /// [`Self::apply_inverse`] per column, but `D^-1`, `D^-1 u` and `1 + u^T D^-1 u` are
-    /// computed once into `scratch` (length >= 2n) instead of per column; no validation).
-    pub(crate) fn apply_inverse_columns(
-        &self,
-        n: usize,
-        x: &[f64],
-        out: &mut [f64],
-        scratch: &mut [f64],
-    ) {
-        let (dinv, du) = scratch[..2 * n].split_at_mut(n);
-        let c = match self {
+    /// The parts of `W^-1 = D^-1 - (D^-1 u)(D^-1 u)^T / c` (7.14): fills `dinv` with `D^-1`
+    /// and `du` with `D^-1 u` (both of length n) and returns `c = 1 + u^T D^-1 u`, or 0 when
+    /// W has no rank-one part (then `du` is untouched). No validation.
+    pub(crate) fn inverse_parts(&self, dinv: &mut [f64], du: &mut [f64]) -> f64 {
+        match self {
             Weight::Identity => {
-                out.copy_from_slice(x);
-                return;
+                dinv.fill(1.0);
+                0.0
             }
             Weight::Diagonal(d) => {
                 for (o, di) in dinv.iter_mut().zip(d.iter()) {
@@ -161,24 +154,17 @@ impl Weight {
             }
             Weight::DiagonalRankOne { diag, u } => {
                 let mut c = 1.0;
-                for i in 0..n {
-                    dinv[i] = 1.0 / diag[i];
-                    du[i] = u[i] * dinv[i];
-                    c += u[i] * du[i];
+                for (((o, e), di), ui) in dinv
+                    .iter_mut()
+                    .zip(du.iter_mut())
+                    .zip(diag.iter())
+                    .zip(u.iter())
+                {
+                    *o = 1.0 / di;
+                    *e = ui * *o;
+                    c += ui * *e;
                 }
                 c
-            }
-        };
-        for (xk, ok) in x.chunks_exact(n).zip(out.chunks_exact_mut(n)) {
-            for ((o, xi), di) in ok.iter_mut().zip(xk).zip(dinv.iter()) {
-                *o = xi * di;
-            }
-            if let Weight::DiagonalRankOne { u, .. } = self {
-                // (7.14): subtract (D^-1 u)(u^T D^-1 x) / (1 + u^T D^-1 u)
-                let f = u.iter().zip(ok.iter()).map(|(a, b)| a * b).sum::<f64>() / c;
-                for (o, d) in ok.iter_mut().zip(du.iter()) {
-                    *o -= f * d;
-                }
             }
         }
     }
