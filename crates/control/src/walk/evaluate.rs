@@ -55,16 +55,8 @@ impl Evaluator {
     pub fn new(lola: &LolaModel, dt: f64) -> Result<Self, WalkError> {
         let model = &lola.model;
         let segments = lola_collision_model(lola).map_err(model_err)?.model;
-        let root = model
-            .bodies()
-            .iter()
-            .position(|b| matches!(b.joint(), JointModel::FreeQuaternion))
-            .ok_or_else(|| model_err("no quaternion floating base"))?;
-        let id = |n: &str| {
-            model
-                .body_id(n)
-                .ok_or_else(|| model_err(format!("no body {n}")))
-        };
+        let root = floating_root(model)?;
+        let id = |n: &str| body(model, n);
         Ok(Self {
             data: Data::new(model),
             distances: CollisionAvoidance::new(model, segments, AvoidanceParams::default())?,
@@ -145,6 +137,22 @@ impl Evaluator {
         let state = (ctrl.q_eval(), ctrl.qdot(), a);
         wrench(model, &mut self.data, self.root, state, point)
     }
+}
+
+/// Index of the quaternion floating base of `model`.
+pub(crate) fn floating_root(model: &Model) -> Result<usize, WalkError> {
+    model
+        .bodies()
+        .iter()
+        .position(|b| matches!(b.joint(), JointModel::FreeQuaternion))
+        .ok_or_else(|| model_err("no quaternion floating base"))
+}
+
+/// Id of the body named `name`, or a model error naming it.
+pub(crate) fn body(model: &Model, name: &str) -> Result<usize, WalkError> {
+    model
+        .body_id(name)
+        .ok_or_else(|| model_err(format!("no body {name}")))
 }
 
 /// Free-joint entries of the inverse dynamics at `(q, v, a)` as world-axes force and moment

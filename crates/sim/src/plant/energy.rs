@@ -28,16 +28,7 @@ impl Energy {
 impl Plant {
     /// Energy at `z` (allocates nothing; runs kinematics into the workspace).
     pub fn energy(&mut self, z: &[f64]) -> Result<Energy, SimError> {
-        let l = self.layout;
-        if z.len() != l.dim() {
-            return Err(SimError::Length {
-                what: "z",
-                got: z.len(),
-                expected: l.dim(),
-            });
-        }
-        self.q.as_mut_slice().copy_from_slice(&z[l.q()]);
-        self.v.as_mut_slice().copy_from_slice(&z[l.v()]);
+        self.load_state(z)?;
         let m = mass_matrix(&self.model, &mut self.data, &self.q)?;
         let kinetic = 0.5 * (m * &self.v).dot(&self.v);
         let com = center_of_mass(&self.model, &mut self.data, &self.q, None)?;
@@ -51,9 +42,11 @@ impl Plant {
                 0.5 * k * theta * theta
             })
             .sum();
-        let contact = self
-            .contact
-            .potential(self.q.as_slice(), self.v.as_slice(), &z[l.contact()]);
+        let contact = self.contact.potential(
+            self.q.as_slice(),
+            self.v.as_slice(),
+            &z[self.layout.contact()],
+        );
         Ok(Energy {
             kinetic,
             gravity,

@@ -21,8 +21,20 @@ use biped_dynamics::{forward_dynamics_kinematics, forward_dynamics_solve};
 impl Plant {
     /// Checks the lengths of `z` and `zdot` and copies `q`, `v` of `z` into the work vectors.
     fn load(&mut self, z: &[f64], zdot: &[f64]) -> Result<(), SimError> {
+        if zdot.len() != self.layout.dim() {
+            return Err(SimError::Length {
+                what: "zdot",
+                got: zdot.len(),
+                expected: self.layout.dim(),
+            });
+        }
+        self.load_state(z)
+    }
+
+    /// Checks the length of `z` and copies its `q`, `v` into the work vectors.
+    pub(crate) fn load_state(&mut self, z: &[f64]) -> Result<(), SimError> {
         let l = self.layout;
-        if z.len() != l.dim() || zdot.len() != l.dim() {
+        if z.len() != l.dim() {
             return Err(SimError::Length {
                 what: "z",
                 got: z.len(),

@@ -10,8 +10,8 @@
 
 use crate::pattern::{PatternSample, Phase};
 use crate::walk::error::{model_err, WalkError};
-use crate::walk::evaluate::wrench;
-use biped_dynamics::{inverse_dynamics, BodyId, Data, JointModel, Model, Wrench};
+use crate::walk::evaluate::{body, floating_root, wrench};
+use biped_dynamics::{inverse_dynamics, BodyId, Data, Model, Wrench};
 use biped_robots::lola::LolaModel;
 use nalgebra::{DVector, Vector2, Vector3};
 
@@ -30,16 +30,8 @@ impl Feedforward {
     /// Feedforward for `lola` (feet `l_foot`, `r_foot`, the bodies carrying the soles).
     pub fn new(lola: &LolaModel) -> Result<Self, WalkError> {
         let model = lola.model.clone();
-        let root = model
-            .bodies()
-            .iter()
-            .position(|b| matches!(b.joint(), JointModel::FreeQuaternion))
-            .ok_or_else(|| model_err("no quaternion floating base"))?;
-        let id = |n: &str| {
-            model
-                .body_id(n)
-                .ok_or_else(|| model_err(format!("no body {n}")))
-        };
+        let root = floating_root(&model)?;
+        let id = |n: &str| body(&model, n);
         let feet = [id("l_foot")?, id("r_foot")?];
         Ok(Self {
             data: Data::new(&model),
