@@ -22,6 +22,7 @@ pub mod dill;
 pub mod urdf;
 
 pub use centroidal::{center_of_mass, CenterOfMass, Centroidal};
+pub use centroidal::{centroidal_momentum, centroidal_momentum_current, CentroidalMomentum};
 pub use configuration::{difference, integrate};
 pub use data::Data;
 pub use dynamics::{

@@ -8,9 +8,11 @@
 
 mod com;
 mod composite;
+mod momentum;
 
 pub use com::{center_of_mass, CenterOfMass};
 pub use composite::Centroidal;
+pub use momentum::{centroidal_momentum, centroidal_momentum_current, CentroidalMomentum};
 
 #[cfg(test)]
 mod tests;

@@ -1,0 +1,112 @@
+//! Centre of mass and centroidal momentum `h_G = [L_G; p]` (7.1) from the first pass of the
+//! forward dynamics ([`crate::forward_dynamics_kinematics`]), without the rotor kinematics it
+//! skips and without `A_G`.
+//!
+//! `h_G = sum_i X_G,i^* M_i v_i`: each body's momentum (2.22) moved to the CoM, which equals
+//! `A_G v` of (7.2) (both are the total momentum of the same body velocities). Ordinary bodies
+//! use their world pose and velocity from the pass. A spin-invariant Harmonic Drive rotor
+//! (3.1)-(3.2) (see [`crate::subsystem::rotor`]) has no pose there; its momentum is formed in
+//! its carrier's (parent's) frame from constants of the model: CoM `c` fixed in the carrier,
+//! inertia `I_c` about it constant in carrier axes (axisymmetry), so with the carrier velocity
+//! `[w_p; v_p]` and the spin column `s` (`s.ang = N` times the axis, carrier axes) its linear
+//! momentum is `m (v_p + w_p x c)` and its angular momentum about its CoM
+//! `I_c (w_p + s.ang qd)` (carrier motion plus the spin term `I N qd` about the axis).
+//! Rotors without that symmetry are ordinary bodies of the pass (the general path).
+
+use crate::jacobian::JacobianError;
+use crate::subsystem::rotor::RotorConstant;
+use crate::{forward_dynamics_kinematics, Data, Force, Model};
+use nalgebra::{DVector, Matrix3, Vector3};
+
+/// Total mass, centre of mass and centroidal momentum `h_G` (world axes), (7.1).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CentroidalMomentum {
+    /// Total mass `m = sum_i m_i`.
+    pub mass: f64,
+    /// Centre of mass `r_C` in world coordinates.
+    pub com: Vector3<f64>,
+    /// `h_G = [L_G; p]`: angular momentum about the CoM and linear momentum, world axes.
+    pub momentum: Force,
+}
+
+/// CoM and `h_G` at `(q, v)`: runs [`forward_dynamics_kinematics`] into `data`, then
+/// [`centroidal_momentum_current`]. `data` then holds that pass (a following
+/// [`crate::forward_dynamics_solve`] may use it).
+pub fn centroidal_momentum(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+) -> Result<CentroidalMomentum, JacobianError> {
+    forward_dynamics_kinematics(model, data, q, v)?;
+    centroidal_momentum_current(model, data)
+}
+
+/// CoM and `h_G` from the kinematics of the last [`forward_dynamics_kinematics`] on `data`
+/// (its `q`, `v`); [`crate::DynamicsError::KinematicsNotCurrent`] if another kinematics call
+/// came since, [`JacobianError::ZeroMass`] for a massless model.
+pub fn centroidal_momentum_current(
+    model: &Model,
+    data: &Data,
+) -> Result<CentroidalMomentum, JacobianError> {
+    crate::check::data(model, data)?;
+    if !data.fd_kinematics {
+        return Err(crate::DynamicsError::KinematicsNotCurrent.into());
+    }
+    let (mass, com) = mass_and_com(model, data)?;
+    let (mut ang, mut lin) = (Vector3::zeros(), Vector3::zeros());
+    for (i, body) in model.bodies().iter().enumerate() {
+        let (rot, pos, h, c) = match &data.rotor_constant[i] {
+            Some(rc) => rotor_momentum(rc, data, body.parent()),
+            None => {
+                let h = body.inertia().apply(&data.vel[i]);
+                (&data.world_rot[i], data.world_pos[i], h, Vector3::zeros())
+            }
+        };
+        // `h` is about the point `c` of the frame at (rot, pos).
+        let p = rot * h.lin;
+        ang += rot * h.ang + (pos + rot * c - com).cross(&p);
+        lin += p;
+    }
+    Ok(CentroidalMomentum {
+        mass,
+        com,
+        momentum: Force::new(ang, lin),
+    })
+}
+
+/// Total mass and CoM from the link poses and the rotors' constant carrier-frame CoMs.
+fn mass_and_com(model: &Model, data: &Data) -> Result<(f64, Vector3<f64>), JacobianError> {
+    let (mut mass, mut moment) = (0.0, Vector3::zeros());
+    for (i, body) in model.bodies().iter().enumerate() {
+        let (m, k, c) = match (&data.rotor_constant[i], body.parent()) {
+            (Some(rc), Some(p)) => (rc.mass, p, rc.com),
+            _ => (body.inertia().mass(), i, body.inertia().com()),
+        };
+        mass += m;
+        moment += (data.world_pos[k] + data.world_rot[k] * c) * m;
+    }
+    if mass <= 0.0 {
+        return Err(JacobianError::ZeroMass);
+    }
+    Ok((mass, moment / mass))
+}
+
+/// A spin-invariant rotor's carrier pose, its momentum about its CoM in carrier axes and that
+/// CoM in carrier coordinates (see the module doc).
+#[inline]
+fn rotor_momentum<'d>(
+    rc: &RotorConstant,
+    data: &'d Data,
+    parent: Option<usize>,
+) -> (&'d Matrix3<f64>, Vector3<f64>, Force, Vector3<f64>) {
+    // Spin-invariant rotors always have a parent (the sub-system parent, `constant_congruences`).
+    let p = parent.unwrap_or(0);
+    let vel = &data.vel[p];
+    let w = vel.ang + rc.s.ang * data.fd_v[rc.v_index];
+    let h = Force::new(
+        rc.inertia_com * w,
+        (vel.lin + vel.ang.cross(&rc.com)) * rc.mass,
+    );
+    (&data.world_rot[p], data.world_pos[p], h, rc.com)
+}
