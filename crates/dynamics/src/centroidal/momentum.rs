@@ -53,60 +53,56 @@ pub fn centroidal_momentum_current(
     if !data.fd_kinematics {
         return Err(crate::DynamicsError::KinematicsNotCurrent.into());
     }
-    let (mass, com) = mass_and_com(model, data)?;
+    // One pass about a reference point near the bodies (the first body's origin, so no
+    // cancellation far from the world origin), then the shift to the CoM: L_G = L_r - (G - r) x p.
+    let r = data
+        .world_pos
+        .first()
+        .copied()
+        .unwrap_or_else(Vector3::zeros);
+    let (mut mass, mut moment) = (0.0, Vector3::zeros());
     let (mut ang, mut lin) = (Vector3::zeros(), Vector3::zeros());
     for (i, body) in model.bodies().iter().enumerate() {
-        let (rot, pos, h, c) = match &data.rotor_constant[i] {
-            Some(rc) => rotor_momentum(rc, data, body.parent()),
-            None => {
-                let h = body.inertia().apply(&data.vel[i]);
-                (&data.world_rot[i], data.world_pos[i], h, Vector3::zeros())
+        let (rot, pos, h, c, m) = match (&data.rotor_constant[i], body.parent()) {
+            (Some(rc), Some(p)) => rotor_momentum(rc, data, p),
+            _ => {
+                let inertia = body.inertia();
+                let h = inertia.apply(&data.vel[i]);
+                let c = inertia.com();
+                (&data.world_rot[i], data.world_pos[i], h, c, inertia.mass())
             }
         };
-        // `h` is about the point `c` of the frame at (rot, pos).
+        // `h` about the frame origin `pos`, CoM `c` in frame coordinates.
+        let rc = rot * c;
         let p = rot * h.lin;
-        ang += rot * h.ang + (pos + rot * c - com).cross(&p);
-        lin += p;
-    }
-    Ok(CentroidalMomentum {
-        mass,
-        com,
-        momentum: Force::new(ang, lin),
-    })
-}
-
-/// Total mass and CoM from the link poses and the rotors' constant carrier-frame CoMs.
-fn mass_and_com(model: &Model, data: &Data) -> Result<(f64, Vector3<f64>), JacobianError> {
-    let (mut mass, mut moment) = (0.0, Vector3::zeros());
-    for (i, body) in model.bodies().iter().enumerate() {
-        let (m, k, c) = match (&data.rotor_constant[i], body.parent()) {
-            (Some(rc), Some(p)) => (rc.mass, p, rc.com),
-            _ => (body.inertia().mass(), i, body.inertia().com()),
-        };
         mass += m;
-        moment += (data.world_pos[k] + data.world_rot[k] * c) * m;
+        moment += (pos - r + rc) * m;
+        lin += p;
+        ang += rot * h.ang + (pos - r).cross(&p);
     }
     if mass <= 0.0 {
         return Err(JacobianError::ZeroMass);
     }
-    Ok((mass, moment / mass))
+    let com_r = moment / mass;
+    ang -= com_r.cross(&lin);
+    Ok(CentroidalMomentum {
+        mass,
+        com: r + com_r,
+        momentum: Force::new(ang, lin),
+    })
 }
 
-/// A spin-invariant rotor's carrier pose, its momentum about its CoM in carrier axes and that
-/// CoM in carrier coordinates (see the module doc).
+/// A spin-invariant rotor's carrier pose, its momentum in carrier axes (moment about the
+/// carrier origin), its CoM in carrier coordinates and its mass (see the module doc).
 #[inline]
 fn rotor_momentum<'d>(
     rc: &RotorConstant,
     data: &'d Data,
-    parent: Option<usize>,
-) -> (&'d Matrix3<f64>, Vector3<f64>, Force, Vector3<f64>) {
-    // Spin-invariant rotors always have a parent (the sub-system parent, `constant_congruences`).
-    let p = parent.unwrap_or(0);
+    p: usize,
+) -> (&'d Matrix3<f64>, Vector3<f64>, Force, Vector3<f64>, f64) {
     let vel = &data.vel[p];
     let w = vel.ang + rc.s.ang * data.fd_v[rc.v_index];
-    let h = Force::new(
-        rc.inertia_com * w,
-        (vel.lin + vel.ang.cross(&rc.com)) * rc.mass,
-    );
-    (&data.world_rot[p], data.world_pos[p], h, rc.com)
+    let lin = (vel.lin + vel.ang.cross(&rc.com)) * rc.mass;
+    let h = Force::new(rc.inertia_com * w + rc.com.cross(&lin), lin);
+    (&data.world_rot[p], data.world_pos[p], h, rc.com, rc.mass)
 }
