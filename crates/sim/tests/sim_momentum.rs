@@ -52,3 +52,31 @@ proptest! {
         check(kind, &dq, &v);
     }
 }
+
+/// After a plant right-hand side the plant's workspace holds the forward-dynamics first pass
+/// at that state (the solve keeps it), so `centroidal_momentum_current` on it equals the
+/// recorder's own sample there (no second kinematics pass needed at a shared state).
+#[test]
+fn plant_rhs_kinematics_give_the_same_sample() {
+    use biped_dynamics::centroidal_momentum_current;
+    use biped_sim::plant::{lola_plant, PlantConfig};
+    use biped_sim::OdeSystem;
+    let mut plant = lola_plant(LolaType::Type2, PlantConfig::default())
+        .unwrap()
+        .plant;
+    let m = plant.model().clone();
+    let mut q = m.neutral();
+    q[2] += 1.0; // off the ground
+    for (k, x) in q.iter_mut().enumerate().skip(7) {
+        *x += 0.05 * ((k % 5) as f64 - 2.0);
+    }
+    let v = DVector::from_fn(m.nv(), |i, _| 0.3 * ((i % 7) as f64 - 3.0));
+    let z = plant.initial_state(&q, &v).unwrap();
+    let mut zdot = vec![0.0; z.len()];
+    plant.rhs(0.0, &z, &mut zdot).unwrap();
+    let c = centroidal_momentum_current(plant.model(), plant.data()).unwrap();
+    let s = centroidal_sample(&m, &mut Data::new(&m), &q, &v).unwrap();
+    assert_eq!(c.com, s.com);
+    assert_eq!(c.momentum, s.momentum);
+    assert!(s.momentum.ang.norm() > 1e-3, "a non-trivial case");
+}
