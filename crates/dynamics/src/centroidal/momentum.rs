@@ -5,7 +5,7 @@
 //! `h_G = sum_i X_G,i^* M_i v_i`: each body's momentum (2.22) moved to the CoM, which equals
 //! `A_G v` of (7.2) (both are the total momentum of the same body velocities). Ordinary bodies
 //! use their world pose and velocity from the pass. A spin-invariant Harmonic Drive rotor
-//! (3.1)-(3.2) (see [`crate::subsystem::rotor`]) has no pose there; its momentum is formed in
+//! (3.1)-(3.2) (`subsystem::rotor`) has no pose there; its momentum is formed in
 //! its carrier's (parent's) frame from constants of the model: CoM `c` fixed in the carrier,
 //! inertia `I_c` about it constant in carrier axes (axisymmetry), so with the carrier velocity
 //! `[w_p; v_p]` and the spin column `s` (`s.ang = N` times the axis, carrier axes) its linear
