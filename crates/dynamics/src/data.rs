@@ -96,7 +96,7 @@ pub struct Data {
     /// `M-hat` is applied from the rigid-body inertia directly).
     pub(crate) mbar_needed: Vec<bool>,
     /// Coordinate axis (0, 1, 2) of a revolute joint whose placement is a pure translation, so
-    /// that `C_i` rotates about that axis ([`ArticulatedInertia::tr_transform_axis`]), per body.
+    /// that `C_i` rotates about that axis ([`ArticulatedInertia::add_tr_transform_axis_to`]), per body.
     pub(crate) plane_axis: Vec<Option<usize>>,
     /// Last closed ankle slider-crank loop, reused by the actuator's other parts.
     pub(crate) ankle_loop: Option<AnkleLoop>,

@@ -201,7 +201,7 @@ fn body_backward(
         let (head, tail) = data.mbar.split_at_mut(i);
         match data.plane_axis[i] {
             _ if data.massless_leaf[i] => {} // M-bar_i = 0: nothing to add.
-            Some(k) => head[p] += tail[0].tr_transform_axis(k, x),
+            Some(k) => tail[0].add_tr_transform_axis_to(k, x, &mut head[p]),
             None => tail[0].add_tr_transform_to(x, &mut head[p]),
         }
         data.fbar[p] -= x.tr_apply_force(&k);

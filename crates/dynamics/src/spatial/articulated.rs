@@ -58,41 +58,64 @@ impl ArticulatedInertia {
     /// With `C = [A 0; 0 A] [E 0; -r~ E]`: rotate the three blocks (`A^T S A`, symmetric
     /// blocks computed on one triangle), then shift by `r` with skew products (18 mults each).
     pub fn tr_transform(&self, x: &SpatialTransform) -> ArticulatedInertia {
+        let mut out = ArticulatedInertia::zero();
+        self.tr_transform_into::<false>(x, &mut out);
+        out
+    }
+
+    /// [`Self::tr_transform`] written to (`ADD = false`) or added to (`ADD = true`) `out`.
+    #[inline]
+    fn tr_transform_into<const ADD: bool>(&self, x: &SpatialTransform, out: &mut Self) {
         let a = &x.rot;
         let ang = sym_congruence(&self.ang, a);
         let lin = sym_congruence(&self.lin, a);
         let cross = a.tr_mul(&(self.cross * a));
-        shift(&ang, &cross, lin, &x.trans)
+        shift_into::<ADD>(&ang, &cross, lin, &x.trans, out);
     }
 
-    /// [`Self::tr_transform`] when `x.rot` is a rotation about coordinate axis `k` (0, 1, 2):
-    /// a revolute joint about a body axis whose placement is a pure translation. Each block
-    /// rotates in the plane normal to the axis (24 instead of 45-54 multiplications).
-    pub(crate) fn tr_transform_axis(&self, k: usize, x: &SpatialTransform) -> ArticulatedInertia {
+    /// `out += C^T I C` ([`Self::tr_transform`] accumulated in place, the backward-pass sum
+    /// (2.69) without a temporary inertia) when `x.rot` is a rotation about coordinate axis
+    /// `k` (0, 1, 2): a revolute joint about a body axis whose placement is a pure
+    /// translation. Each block rotates in the plane normal to the axis (24 instead of 45-54
+    /// multiplications).
+    pub(crate) fn add_tr_transform_axis_to(&self, k: usize, x: &SpatialTransform, out: &mut Self) {
+        self.tr_transform_axis_into::<true>(k, x, out);
+    }
+
+    /// The axis congruence of [`Self::add_tr_transform_axis_to`] written to (`ADD = false`) or
+    /// added to (`ADD = true`) `out`.
+    #[inline]
+    fn tr_transform_axis_into<const ADD: bool>(
+        &self,
+        k: usize,
+        x: &SpatialTransform,
+        out: &mut Self,
+    ) {
         match k {
-            0 => self.tr_transform_plane::<0>(x),
-            1 => self.tr_transform_plane::<1>(x),
-            _ => self.tr_transform_plane::<2>(x),
+            0 => self.tr_transform_plane::<0, ADD>(x, out),
+            1 => self.tr_transform_plane::<1, ADD>(x, out),
+            _ => self.tr_transform_plane::<2, ADD>(x, out),
         }
     }
 
-    /// [`Self::tr_transform_axis`] for the axis `K` known at compile time (constant indices).
+    /// [`Self::tr_transform_axis_into`] for the axis `K` known at compile time (constant indices).
     #[inline]
-    fn tr_transform_plane<const K: usize>(&self, x: &SpatialTransform) -> ArticulatedInertia {
+    fn tr_transform_plane<const K: usize, const ADD: bool>(
+        &self,
+        x: &SpatialTransform,
+        out: &mut Self,
+    ) {
         let a = &x.rot;
         let ang = sym_axis_congruence::<K>(&self.ang, a);
         let lin = sym_axis_congruence::<K>(&self.lin, a);
         let cross = axis_congruence::<K>(&self.cross, a);
-        shift(&ang, &cross, lin, &x.trans)
+        shift_into::<ADD>(&ang, &cross, lin, &x.trans, out);
     }
 
     /// `out += C^T I C` without a temporary inertia (the backward-pass accumulation (2.69)).
     #[inline]
     pub fn add_tr_transform_to(&self, x: &SpatialTransform, out: &mut ArticulatedInertia) {
-        let t = self.tr_transform(x);
-        out.ang += t.ang;
-        out.cross += t.cross;
-        out.lin += t.lin;
+        self.tr_transform_into::<true>(x, out);
     }
 
     /// Dense 6x6 matrix (for tests, debugging and the 6-DoF joint path).
@@ -139,14 +162,16 @@ impl AddAssign for ArticulatedInertia {
 
 /// Shift of rotated blocks by `r` (parent coordinates), the `[E 0; -r~ E]` factor of `C`:
 /// `cross' = B - (D r~)^T`, `ang' = A - B r~ - (B r~)^T - r~ D r~`, the symmetric `ang'`
-/// evaluated on its upper triangle only (exactly symmetric result).
+/// evaluated on its upper triangle only (exactly symmetric result); written to `out`
+/// (`ADD = false`) or added to it (`ADD = true`, no temporary inertia).
 #[inline]
-fn shift(
+fn shift_into<const ADD: bool>(
     ang: &Matrix3<f64>,
     cross: &Matrix3<f64>,
     lin: Matrix3<f64>,
     r: &Vector3<f64>,
-) -> ArticulatedInertia {
+    out: &mut ArticulatedInertia,
+) {
     let dr = mul_skew(&lin, r);
     let br = mul_skew(cross, r);
     // (r~ M)_ij = (r x M e_j)_i.
@@ -156,10 +181,14 @@ fn shift(
     };
     let e = |i: usize, j: usize| ang[(i, j)] - br[(i, j)] - br[(j, i)] - rdr(i, j);
     let (m01, m02, m12) = (e(0, 1), e(0, 2), e(1, 2));
-    ArticulatedInertia {
-        ang: Matrix3::new(e(0, 0), m01, m02, m01, e(1, 1), m12, m02, m12, e(2, 2)),
-        cross: cross - dr.transpose(),
-        lin,
+    let ang = Matrix3::new(e(0, 0), m01, m02, m01, e(1, 1), m12, m02, m12, e(2, 2));
+    let cross = cross - dr.transpose();
+    if ADD {
+        out.ang += ang;
+        out.cross += cross;
+        out.lin += lin;
+    } else {
+        *out = ArticulatedInertia { ang, cross, lin };
     }
 }
 
@@ -273,9 +302,18 @@ mod tests {
             let rot = nalgebra::Rotation3::from_axis_angle(axis, 0.7 - k as f64);
             let x = SpatialTransform::new(*rot.matrix(), Vector3::new(0.2, -0.5, 0.3));
             let general = art.tr_transform(&x).to_matrix();
-            let fast = art.tr_transform_axis(k, &x).to_matrix();
-            assert!((fast - general).amax() < 1e-13 * general.amax());
-            assert_eq!(fast, fast.transpose());
+            let mut set = art; // Overwritten, not accumulated.
+            art.tr_transform_axis_into::<false>(k, &x, &mut set);
+            let set = set.to_matrix();
+            assert!((set - general).amax() < 1e-13 * general.amax());
+            assert_eq!(set, set.transpose());
+            // Accumulated onto a nonzero inertia, fast and general paths.
+            let (mut acc_fast, mut acc_general) = (art, art);
+            art.add_tr_transform_axis_to(k, &x, &mut acc_fast);
+            art.add_tr_transform_to(&x, &mut acc_general);
+            let expect = dense + general;
+            assert!((acc_fast.to_matrix() - expect).amax() < 1e-13 * expect.amax());
+            assert!((acc_general.to_matrix() - expect).amax() < 1e-13 * expect.amax());
         }
     }
 }

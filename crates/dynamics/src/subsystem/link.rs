@@ -119,7 +119,7 @@ pub(crate) fn backward(
     let (m, out) = (&tail[0], &mut head[parent]);
     match (lr.rigid, data.plane_axis[link]) {
         (true, _) => add_rigid_congruence(&model.bodies[link].inertia, x, out),
-        (false, Some(axis)) => *out += m.tr_transform_axis(axis, x),
+        (false, Some(axis)) => m.add_tr_transform_axis_to(axis, x, out),
         (false, None) => m.add_tr_transform_to(x, out),
     }
     *out += lr.congruence;

@@ -154,7 +154,7 @@ fn backward_n<const N: usize>(
                 (data.plane_axis[j], model.bodies[j].parent == sub.parent)
             {
                 // C-hat_j = C_j for a member on the sub-system's parent.
-                kc += m.tr_transform_axis(k, cj);
+                m.add_tr_transform_axis_to(k, cj, &mut kc);
             } else {
                 m.add_tr_transform_to(cj, &mut kc);
             }
