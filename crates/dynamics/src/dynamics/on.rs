@@ -21,7 +21,7 @@ use crate::kinematics::{force_of, rotor_transform, six};
 use crate::model::coupling::Mechanism;
 use crate::model::joint::Joint;
 use crate::model::JointModel;
-use crate::spatial::{ArticulatedInertia, Force, Motion, Wrench};
+use crate::spatial::{plane, ArticulatedInertia, Force, Motion, Wrench};
 use crate::subsystem::rotor::{parent_frame_bias, RotorConstant};
 use crate::subsystem::{self, NodeKind};
 use crate::{Data, DynamicsError, Model};
@@ -289,7 +289,7 @@ pub fn forward_pass_2<'d>(model: &Model, data: &'d mut Data) -> &'d DVector<f64>
 fn body_forward(model: &Model, data: &mut Data, i: usize) {
     let body = &model.bodies[i];
     let ap = match body.parent {
-        Some(p) => data.x[i].apply_motion(&data.acc[p]),
+        Some(p) => plane::apply_motion(&data.x[i], data.plane_axis[i], &data.acc[p]),
         None => Motion::zero(),
     };
     let vi = body.v_index;

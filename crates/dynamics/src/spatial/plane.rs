@@ -2,7 +2,26 @@
 //! revolute joint about a body axis whose placement is a pure translation): for the latter
 //! only the plane normal to the axis mixes (4 instead of 9 multiplications per vector).
 
+use super::{Motion, SpatialTransform};
 use nalgebra::{Matrix3, Vector3};
+
+/// `C m = [A w; A (v + w x r)]` (motion transform, (2.36)) for a transform whose rotation is
+/// about coordinate axis `axis` (`Some(k)`: plane products) or general (`None`).
+#[inline(always)]
+pub(crate) fn apply_motion(x: &SpatialTransform, axis: Option<usize>, m: &Motion) -> Motion {
+    match axis {
+        Some(0) => motion_by(&Plane::<0>(&x.rot), x, m),
+        Some(1) => motion_by(&Plane::<1>(&x.rot), x, m),
+        Some(_) => motion_by(&Plane::<2>(&x.rot), x, m),
+        None => x.apply_motion(m),
+    }
+}
+
+/// [`apply_motion`] with the products by `A` done by `r`.
+#[inline(always)]
+fn motion_by<R: RotationOps>(r: &R, x: &SpatialTransform, m: &Motion) -> Motion {
+    Motion::new(r.mul(&m.ang), r.mul(&(m.lin + m.ang.cross(&x.trans))))
+}
 
 /// The products of the first forward recursion with the rotation `A` of a transform.
 pub(crate) trait RotationOps {
@@ -72,5 +91,21 @@ mod tests {
         check(&Plane::<1>(&a[1]), &a[1]);
         check(&Plane::<2>(&a[2]), &a[2]);
         check(&General(&a[1]), &a[1]);
+    }
+
+    /// The plane motion transform against the general one, for each axis and `None`.
+    #[test]
+    fn plane_motion_transform_matches_general() {
+        let m = Motion::new(Vector3::new(0.7, -0.2, 1.3), Vector3::new(-0.4, 0.9, 0.25));
+        let r = Vector3::new(0.2, -0.5, 0.3);
+        let axes = [Vector3::x_axis(), Vector3::y_axis(), Vector3::z_axis()];
+        for (k, ax) in axes.iter().enumerate() {
+            let x =
+                SpatialTransform::new(*Rotation3::from_axis_angle(ax, 0.9 - k as f64).matrix(), r);
+            let (fast, general) = (apply_motion(&x, Some(k), &m), x.apply_motion(&m));
+            assert!((fast.ang - general.ang).amax() < 1e-15);
+            assert!((fast.lin - general.lin).amax() < 1e-15);
+            assert_eq!(apply_motion(&x, None, &m), general);
+        }
     }
 }
