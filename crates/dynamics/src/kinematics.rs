@@ -422,8 +422,10 @@ pub(crate) fn first_forward_kinematics(
     q: &DVector<f64>,
     v: &DVector<f64>,
 ) {
-    data.fd_q.copy_from(q);
-    data.fd_v.copy_from(v);
+    // Slice copies (a memcpy) instead of nalgebra's element-wise `copy_from`; the lengths
+    // were checked by the caller (`check::data`, `check::configuration`, `check::vector`).
+    data.fd_q.as_mut_slice().copy_from_slice(q.as_slice());
+    data.fd_v.as_mut_slice().copy_from_slice(v.as_slice());
     for i in 0..model.nbodies() {
         if data.rotor_constant[i].is_none() {
             body_kinematics(model, data, i, q, Some(v));
