@@ -127,7 +127,7 @@ pub(crate) fn solve<'d>(
     fext: Option<&[Wrench]>,
 ) -> Result<&'d DVector<f64>, DynamicsError> {
     dynamic_first_pass(model, data, fext)?;
-    backward_pass(model, data, tau)?;
+    backward_unchecked(model, data, tau)?;
     Ok(forward_pass_2(model, data))
 }
 
@@ -140,6 +140,16 @@ pub fn backward_pass(
 ) -> Result<(), DynamicsError> {
     check::data(model, data)?;
     check::vector("tau", tau, model.nv())?;
+    backward_unchecked(model, data, tau)
+}
+
+/// [`backward_pass`] for inputs already checked by the caller ([`solve`]: no second scan of
+/// `tau` for non-finite entries).
+fn backward_unchecked(
+    model: &Model,
+    data: &mut Data,
+    tau: &DVector<f64>,
+) -> Result<(), DynamicsError> {
     for node in model.nodes.iter().rev() {
         match node.kind {
             NodeKind::Body(i) => body_backward(model, data, i, tau)?,
@@ -332,5 +342,67 @@ mod tests {
         let (u, d) = free_joint_products(&m);
         assert_eq!(u, dense * j);
         assert_eq!(d, j.transpose() * dense * j);
+    }
+
+    /// Non-finite `tau` is rejected once by the two-phase entry point (the solve itself does
+    /// not scan it again) and by the public backward pass.
+    #[test]
+    fn non_finite_tau_is_rejected() {
+        use crate::model::{BodySpec, JointModel, ModelBuilder};
+        use crate::spatial::RigidInertia;
+        use nalgebra::{Isometry3, Matrix3};
+        let inertia = RigidInertia::new(1.0, Vector3::new(0.1, 0.0, 0.0), Matrix3::identity())
+            .expect("valid inertia");
+        let mut b = ModelBuilder::new();
+        b.add_body(BodySpec {
+            name: "link".into(),
+            joint_name: "link".into(),
+            parent: None,
+            joint: JointModel::Revolute {
+                axis: Vector3::y_axis(),
+            },
+            placement: Isometry3::identity(),
+            inertia,
+        })
+        .expect("body");
+        let model = b.build().expect("model");
+        let mut data = Data::new(&model);
+        let (q, v) = (
+            DVector::from_element(1, 0.3),
+            DVector::from_element(1, -0.2),
+        );
+        let tau = DVector::from_element(1, f64::NAN);
+        crate::forward_dynamics_kinematics(&model, &mut data, &q, &v).expect("kinematics");
+        let err = crate::forward_dynamics_solve(
+            &model,
+            &mut data,
+            &tau,
+            None,
+            super::super::Algorithm::On,
+        );
+        assert!(matches!(
+            err,
+            Err(DynamicsError::NonFinite {
+                argument: "tau",
+                ..
+            })
+        ));
+        let err = backward_pass(&model, &mut data, &tau);
+        assert!(matches!(
+            err,
+            Err(DynamicsError::NonFinite {
+                argument: "tau",
+                ..
+            })
+        ));
+        let ok = DVector::from_element(1, 0.5);
+        assert!(crate::forward_dynamics_solve(
+            &model,
+            &mut data,
+            &ok,
+            None,
+            super::super::Algorithm::On
+        )
+        .is_ok());
     }
 }
