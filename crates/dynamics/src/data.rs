@@ -69,11 +69,13 @@ pub struct Data {
     pub(crate) col_world: Vec<Motion>,
     /// Offset of each body's columns in `col_world`.
     pub(crate) col_offset: Vec<usize>,
-    /// Member transforms `C-hat_j` from the sub-system parent (2.77), per body.
+    /// Member transforms `C-hat_j` from the sub-system parent (2.77), per body; only for
+    /// members not attached to the parent (the others' `C-hat_j = C_j` is read from `x`).
     pub(crate) cbar: Vec<SpatialTransform>,
     /// Member Jacobians `J-hat_j` over the sub-system's coordinates (2.78), per body.
     pub(crate) jbar: Vec<[Motion; MAX_SUBSYSTEM_DOF]>,
-    /// Member bias accelerations `b-hat_j` (2.79), per body.
+    /// Member bias accelerations `b-hat_j` (2.79), per body; only for members not attached
+    /// to the sub-system parent (the others' `b-hat_j = b_j` is read from `bias_acc`).
     pub(crate) bbar: Vec<Motion>,
     /// Cholesky factor of `M_S` (2.76a), per sub-system.
     pub(crate) sub_l: Vec<[[f64; MAX_SUBSYSTEM_DOF]; MAX_SUBSYSTEM_DOF]>,

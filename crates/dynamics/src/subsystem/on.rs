@@ -60,26 +60,37 @@ fn hat_kinematics_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
             continue; // Spin-invariant rotor: works in the parent frame, no member kinematics.
         }
         let body = &model.bodies[j];
-        let x = data.x[j];
         let mut cols = [Motion::zero(); N];
-        match body.parent {
-            Some(pp) if body.parent != sub.parent => {
-                data.cbar[j] = x.compose(&data.cbar[pp]);
-                let jp = &data.jbar[pp];
-                for (col, c) in cols.iter_mut().zip(jp).take(n) {
-                    *col = x.apply_motion(c);
-                }
-                data.bbar[j] = x.apply_motion(&data.bbar[pp]) + data.bias_acc[j];
+        if let Some(pp) = body.parent.filter(|_| body.parent != sub.parent) {
+            let x = &data.x[j];
+            let (cp, bp) = hat_transform_bias(model, data, s, pp);
+            let (c, b) = (x.compose(cp), x.apply_motion(bp) + data.bias_acc[j]);
+            for (col, c) in cols.iter_mut().zip(&data.jbar[pp]).take(n) {
+                *col = x.apply_motion(c);
             }
-            _ => {
-                data.cbar[j] = x;
-                data.bbar[j] = data.bias_acc[j];
-            }
+            (data.cbar[j], data.bbar[j]) = (c, b);
         }
         for (k, &pos) in sub.columns[m].iter().take(body.v_set.len()).enumerate() {
             cols[pos] += joint_column(data, j, &body.joint, k);
         }
         data.jbar[j][..n].copy_from_slice(&cols[..n]);
+    }
+}
+
+/// `C-hat_j`, `b-hat_j` of member `j` of sub-system `s` (2.77), (2.79): for a member attached
+/// to `p_S` its own `C_j`, `b_j` read in place (not copied to `cbar`, `bbar`), else the
+/// products stored by [`hat_kinematics`].
+#[inline(always)]
+fn hat_transform_bias<'d>(
+    model: &Model,
+    data: &'d Data,
+    s: usize,
+    j: usize,
+) -> (&'d SpatialTransform, &'d Motion) {
+    if model.bodies[j].parent == model.subsystems[s].parent {
+        (&data.x[j], &data.bias_acc[j])
+    } else {
+        (&data.cbar[j], &data.bbar[j])
     }
 }
 
@@ -137,8 +148,8 @@ fn backward_n<const N: usize>(
                 m.apply(a)
             }
         };
-        let (cj, jj) = (&data.cbar[j], &data.jbar[j]);
-        let hat_f = apply(&data.bbar[j]) - data.fbar[j];
+        let ((cj, bj), jj) = (hat_transform_bias(model, data, s, j), &data.jbar[j]);
+        let hat_f = apply(bj) - data.fbar[j];
         for c in 0..n {
             let mj = apply(&jj[c]);
             for r in c..n {
@@ -237,7 +248,8 @@ fn forward_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
         data.ddq[sub.v_set[c]] = qdd[c];
     }
     for &j in &sub.with_outside_children {
-        let mut a = data.cbar[j].apply_motion(&ap) + data.bbar[j];
+        let (cj, bj) = hat_transform_bias(model, data, s, j);
+        let mut a = cj.apply_motion(&ap) + *bj;
         for (col, q) in data.jbar[j].iter().zip(&qdd).take(n) {
             a += *col * *q;
         }
