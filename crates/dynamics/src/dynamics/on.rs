@@ -25,7 +25,7 @@ use crate::spatial::{plane, ArticulatedInertia, Force, Motion, Wrench};
 use crate::subsystem::rotor::{parent_frame_bias, RotorConstant};
 use crate::subsystem::{self, NodeKind};
 use crate::{Data, DynamicsError, Model};
-use nalgebra::{DVector, Matrix6, Vector3};
+use nalgebra::{DVector, Matrix6, Vector3, Vector6};
 
 /// First forward recursion (Algorithm 2.2 with step 2 of Algorithm 2.1): kinematics, body
 /// forces `f_i` (gravity, external wrenches, inertial forces) and `M-bar_i = M_i`, `f-bar_i = f_i`.
@@ -222,6 +222,7 @@ fn body_backward(
 /// Backward step of a 6-DoF joint: returns `M-bar - U D^-1 U^T` and `k_i`.
 /// Leaves `M-bar - U D^-1 U^T` in `mbar[i]` and returns `k_i`; a root joint
 /// (`propagate = false`) needs only `p_i`, its parent acceleration being zero.
+#[inline(never)]
 fn six_dof_backward(
     data: &mut Data,
     i: usize,
@@ -246,9 +247,13 @@ fn six_dof_backward(
     for c in 0..6 {
         check_pivot(vi + c, l[(c, c)] * l[(c, c)], d[(c, c)])?;
     }
-    let b = data.bias_acc[i].to_vector();
-    let fbar = data.fbar[i].to_vector();
-    let rhs = six(tau, vi) - j.tr_mul(&(mbar * b - fbar));
+    let hat_f = data.mbar[i].apply(&data.bias_acc[i]) - data.fbar[i];
+    let jt_hat = if free {
+        free_tr_mul(&hat_f)
+    } else {
+        j.tr_mul(&hat_f.to_vector())
+    };
+    let rhs = six(tau, vi) - jt_hat;
     let p = chol.solve(&rhs);
     data.p6[i] = p;
     if !propagate {
@@ -256,6 +261,7 @@ fn six_dof_backward(
         return Ok(Force::zero());
     }
     let pi = chol.solve(&u.transpose());
+    let (b, fbar) = (data.bias_acc[i].to_vector(), data.fbar[i].to_vector());
     let k = mbar * (b + j * p) - fbar;
     let ia: Matrix6<f64> = mbar - u * pi;
     data.pi6[i] = pi;
@@ -278,6 +284,12 @@ fn free_joint_products(m: &ArticulatedInertia) -> (Matrix6<f64>, Matrix6<f64>) {
     d.fixed_view_mut::<3, 3>(3, 0).copy_from(&m.cross);
     d.fixed_view_mut::<3, 3>(3, 3).copy_from(&m.ang);
     (u, d)
+}
+
+/// `J^T f = [f_lin; f_ang]` for the free joint's constant `J = [0 E; E 0]` (a permutation).
+#[inline]
+fn free_tr_mul(f: &Force) -> Vector6<f64> {
+    Vector6::new(f.lin.x, f.lin.y, f.lin.z, f.ang.x, f.ang.y, f.ang.z)
 }
 
 /// Second forward recursion (Algorithm 2.4): `qddot` into `data.ddq` and body accelerations.
@@ -342,6 +354,8 @@ mod tests {
         let (u, d) = free_joint_products(&m);
         assert_eq!(u, dense * j);
         assert_eq!(d, j.transpose() * dense * j);
+        let w = Vector6::new(0.3, -1.2, 0.7, 2.1, -0.4, 0.05);
+        assert_eq!(free_tr_mul(&Force::from_vector(&w)), j.transpose() * w);
     }
 
     /// Non-finite `tau` is rejected once by the two-phase entry point (the solve itself does
