@@ -323,15 +323,28 @@ fn body_forward(model: &Model, data: &mut Data, i: usize) {
         }
         Joint::Fixed | Joint::Coupled => ap,
         Joint::EulerZxz | Joint::Quaternion => {
-            let qdd = match body.parent {
-                Some(_) => data.p6[i] - data.pi6[i] * ap.to_vector(),
-                None => data.p6[i],
-            };
-            data.ddq.rows_mut(vi, 6).copy_from(&qdd);
-            ap + Motion::from_vector(&(data.jacobian6[i] * qdd))
+            six_dof_forward(data, i, vi, (body.parent.is_some(), ap))
         }
     };
     data.acc[i] = a + data.bias_acc[i];
+}
+
+/// Second forward step of a 6-DoF joint body `i` (2.66): `qddot_i` into `ddq`, returns
+/// `C_i a_p + J_i qddot_i`; out of line (one body per model) to keep the per-body loop small.
+#[inline(never)]
+fn six_dof_forward(
+    data: &mut Data,
+    i: usize,
+    vi: usize,
+    (has_parent, ap): (bool, Motion),
+) -> Motion {
+    let qdd = if has_parent {
+        data.p6[i] - data.pi6[i] * ap.to_vector()
+    } else {
+        data.p6[i]
+    };
+    data.ddq.rows_mut(vi, 6).copy_from(&qdd);
+    ap + Motion::from_vector(&(data.jacobian6[i] * qdd))
 }
 
 #[cfg(test)]
