@@ -2,11 +2,14 @@
 //! integrate the plant over one control period, repeat; with an observer hook per cycle and
 //! a serialisable [`Summary`].
 
-mod momentum;
 mod signals;
 mod summary;
 
-pub use momentum::{centroidal_sample, CentroidalSample};
+/// CoM and centroidal momentum `h_G` (7.1) of a recorded frame: one forward-dynamics first
+/// pass, no `A_G` (tests/sim_momentum.rs checks it against `A_G v`).
+pub use biped_dynamics::{
+    centroidal_momentum as centroidal_sample, CentroidalMomentum as CentroidalSample,
+};
 pub use signals::Signals;
 pub use summary::{Check, Summary};
 

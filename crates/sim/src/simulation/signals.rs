@@ -4,11 +4,11 @@
 //! `i[<joint>]`, and optionally the CoM and the centroidal angular momentum `L_G` about it
 //! (one kinematics pass per recorded frame, [`super::momentum`]).
 
-use super::momentum::centroidal_sample;
 use super::Frame;
 use crate::error::SimError;
 use crate::plant::Plant;
 use crate::record::{Recorder, SignalId};
+use biped_dynamics::centroidal_momentum;
 use biped_dynamics::{Data, Model};
 use nalgebra::DVector;
 
@@ -79,7 +79,7 @@ impl Signals {
         if let Some((m, d, q, qd)) = self.momentum.as_mut() {
             q.as_mut_slice().copy_from_slice(&frame.z[l.q()]);
             qd.as_mut_slice().copy_from_slice(&frame.z[l.v()]);
-            let s = centroidal_sample(m, d, q, qd)?;
+            let s = centroidal_momentum(m, d, q, qd)?;
             let (com, h) = (s.com, s.momentum);
             v.extend_from_slice(&[com.x, com.y, com.z, h.ang.x, h.ang.y, h.ang.z]);
         }
