@@ -64,22 +64,22 @@ fn bad_arguments_fail_with_one_line() {
     }
 }
 
-#[test]
-fn dynamic_walk_writes_csv_plots_and_summary_entry() {
-    let dir = std::env::temp_dir().join(format!("biped_walk_dyn_{}", std::process::id()));
+/// `biped walk --steps 4 --method none --dynamic EXTRA --out DIR` with a fresh temp DIR.
+fn dynamic_walk(tag: &str, extra: &[&str]) -> (std::path::PathBuf, std::process::Output) {
+    let dir = std::env::temp_dir().join(format!("biped_walk_{tag}_{}", std::process::id()));
     let out = biped()
-        .args([
-            "walk",
-            "--steps",
-            "4",
-            "--method",
-            "none",
-            "--dynamic",
-            "--out",
-        ])
+        .args(["walk", "--steps", "4", "--method", "none", "--dynamic"])
+        .args(extra)
+        .arg("--out")
         .arg(&dir)
         .output()
         .unwrap();
+    (dir, out)
+}
+
+#[test]
+fn dynamic_walk_writes_csv_plots_and_summary_entry() {
+    let (dir, out) = dynamic_walk("dyn", &[]);
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(
         out.status.success(),
@@ -130,21 +130,7 @@ fn dynamic_walk_writes_csv_plots_and_summary_entry() {
 
 #[test]
 fn open_loop_dynamic_walk_falls_with_one_line_error() {
-    let dir = std::env::temp_dir().join(format!("biped_walk_fall_{}", std::process::id()));
-    let out = biped()
-        .args([
-            "walk",
-            "--steps",
-            "4",
-            "--method",
-            "none",
-            "--dynamic",
-            "--open-loop",
-        ])
-        .arg("--out")
-        .arg(&dir)
-        .output()
-        .unwrap();
+    let (dir, out) = dynamic_walk("fall", &["--open-loop"]);
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     // stderr also carries the kinematic walk's progress line; the error is one line
