@@ -91,8 +91,9 @@ fn write_free_pose(q: &mut DVector<f64>, qi: usize, r: &UnitQuaternion<f64>, t: 
     q.rows_mut(qi + 3, 4).copy_from(&c);
 }
 
-/// SO(3) left Jacobian `V(w) = E + (1 - cos t)/t^2 w~ + (t - sin t)/t^3 w~^2`, `t = |w|`.
-fn left_jacobian(w: &Vector3<f64>) -> Matrix3<f64> {
+/// SO(3) left Jacobian `V(w) = E + (1 - cos t)/t^2 w~ + (t - sin t)/t^3 w~^2`, `t = |w|`
+/// (maps a constant body twist's linear part to the translation of the SE(3) exponential).
+pub fn left_jacobian(w: &Vector3<f64>) -> Matrix3<f64> {
     let t2 = w.norm_squared();
     let k = skew(w);
     let (a, b) = if t2 < 1e-8 {

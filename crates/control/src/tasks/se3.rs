@@ -2,7 +2,8 @@
 //! the same map as [`biped_dynamics::integrate`] (constant body twist `v = [nu; w]` over the
 //! step, `q = [x, y, z, qx, qy, qz, qw]`), checked against it in the tests.
 
-use nalgebra::{DVector, Matrix3, Quaternion, UnitQuaternion, Vector3};
+use biped_dynamics::configuration::left_jacobian;
+use nalgebra::{DVector, Quaternion, UnitQuaternion, Vector3};
 
 /// Writes the free-joint pose at `q[qi..qi+7]` moved by the body twist `v[vi..vi+6] * step`
 /// into `out[qi..qi+7]`.
@@ -28,17 +29,4 @@ pub(crate) fn integrate_free(
     for k in 0..4 {
         out[qi + 3 + k] = c[k];
     }
-}
-
-/// SO(3) left Jacobian `E + (1 - cos t)/t^2 w~ + (t - sin t)/t^3 w~^2`, `t = |w|`.
-fn left_jacobian(w: &Vector3<f64>) -> Matrix3<f64> {
-    let t2 = w.norm_squared();
-    let k = w.cross_matrix();
-    let (a, b) = if t2 < 1e-8 {
-        (0.5 - t2 / 24.0, 1.0 / 6.0 - t2 / 120.0)
-    } else {
-        let t = t2.sqrt();
-        ((1.0 - t.cos()) / t2, (t - t.sin()) / (t2 * t))
-    };
-    Matrix3::identity() + k * a + k * k * b
 }
