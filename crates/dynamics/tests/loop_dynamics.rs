@@ -23,15 +23,7 @@ fn check_model(model: &Model, seed: u64) {
         let sparse = forward_dynamics(model, &mut data, &q, &v, &tau, None, Algorithm::Sparse)
             .unwrap()
             .clone();
-        assert!(
-            rel_diff(&on, &crba) < 1e-10,
-            "seed {seed}: O(n) vs CRBA {}",
-            rel_diff(&on, &crba)
-        );
-        assert!(
-            rel_diff(&sparse, &crba) < 1e-10,
-            "seed {seed}: sparse vs CRBA"
-        );
+        assert_methods_agree(seed, &on, &crba, &sparse);
         let back = inverse_dynamics(model, &mut data, &q, &v, &on, None).unwrap();
         assert!(
             rel_diff(back, &tau) < 1e-9,

@@ -32,15 +32,7 @@ fn check_state(model: &Model, seed: u64, with_fext: bool) {
     let on = solve(&mut data, Algorithm::On);
     let crba = solve(&mut data, Algorithm::Crba);
     let sparse = solve(&mut data, Algorithm::Sparse);
-    assert!(
-        rel_diff(&on, &crba) < 1e-10,
-        "seed {seed}: O(n) vs CRBA {}",
-        rel_diff(&on, &crba)
-    );
-    assert!(
-        rel_diff(&sparse, &crba) < 1e-10,
-        "seed {seed}: sparse vs CRBA"
-    );
+    assert_methods_agree(seed, &on, &crba, &sparse);
     let back: DVector<f64> = inverse_dynamics(model, &mut data, &q, &v, &on, fext)
         .unwrap()
         .clone();

@@ -9,9 +9,27 @@ pub use core_support::{
 };
 
 use biped_dynamics::{BodySpec, JointModel, Model, ModelBuilder, RigidInertia};
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{DVector, Matrix3, Vector3};
 use rand::rngs::StdRng;
 use rand::Rng;
+
+/// Asserts that O(n) and sparse LTL forward dynamics agree with CRBA to 1e-10 (relative).
+pub fn assert_methods_agree(
+    seed: u64,
+    on: &DVector<f64>,
+    crba: &DVector<f64>,
+    sparse: &DVector<f64>,
+) {
+    assert!(
+        rel_diff(on, crba) < 1e-10,
+        "seed {seed}: O(n) vs CRBA {}",
+        rel_diff(on, crba)
+    );
+    assert!(
+        rel_diff(sparse, crba) < 1e-10,
+        "seed {seed}: sparse vs CRBA"
+    );
+}
 
 /// What a generated body is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
