@@ -52,6 +52,13 @@ pub fn forward_dynamics<'d>(
 /// inertia, `subsystem::rotor`): use [`crate::forward_kinematics`] for those. Forces, torques
 /// and external wrenches can then be computed from these kinematics (e.g. contact at the feet,
 /// drive torques) and passed to [`forward_dynamics_solve`].
+///
+/// Reuse: when `data` still holds this function's kinematics (no other kinematics call came
+/// since: every other pass clears the mark) for a `q` and `v` bitwise equal to the given ones,
+/// it returns `Ok` after the input checks without recomputing, so results are bit-identical
+/// to a fresh pass (e.g. sensors, recording and the first Runge-Kutta stage at one state
+/// share one pass). `data` serves one model; if you overwrite its public kinematic fields by
+/// hand, run another kinematics call (e.g. [`crate::update_placements`]) before this one.
 pub fn forward_dynamics_kinematics(
     model: &Model,
     data: &mut Data,
@@ -61,10 +68,21 @@ pub fn forward_dynamics_kinematics(
     check::data(model, data)?;
     check::configuration(model, q)?;
     check::vector("v", v, model.nv())?;
+    if data.fd_kinematics && same_bits(&data.fd_q, q) && same_bits(&data.fd_v, v) {
+        return Ok(());
+    }
     first_forward_kinematics(model, data, q, v);
     take_fault(data)?;
     data.fd_kinematics = true;
     Ok(())
+}
+
+/// True if `a` and `b` hold the same `f64` bit patterns (equal lengths checked by the caller;
+/// `0.0` and `-0.0` differ, which only costs a recomputation).
+#[inline]
+fn same_bits(a: &DVector<f64>, b: &DVector<f64>) -> bool {
+    let (a, b) = (a.as_slice(), b.as_slice());
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
 }
 
 /// Second phase of forward dynamics: body forces (2.56) with `tau` and optional external body
