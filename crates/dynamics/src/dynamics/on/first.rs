@@ -1,0 +1,103 @@
+//! First forward recursion of the O(n) algorithm (Algorithm 2.2 with step 2 of Algorithm 2.1):
+//! body forces, `M-bar_i = M_i` and the parent-frame bias of spin-invariant rotors.
+
+use crate::check;
+use crate::kinematics::{force_of, rotor_transform};
+use crate::model::coupling::Mechanism;
+use crate::model::JointModel;
+use crate::spatial::{Force, Wrench};
+use crate::subsystem;
+use crate::subsystem::rotor::{parent_frame_bias, RotorConstant};
+use crate::{Data, DynamicsError, Model};
+use nalgebra::{DVector, Vector3};
+
+/// First forward recursion (Algorithm 2.2 with step 2 of Algorithm 2.1): kinematics, body
+/// forces `f_i` (gravity, external wrenches, inertial forces) and `M-bar_i = M_i`, `f-bar_i = f_i`.
+pub fn forward_pass_1(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    fext: Option<&[Wrench]>,
+) -> Result<(), DynamicsError> {
+    super::super::forward_dynamics_kinematics(model, data, q, v)?;
+    check::wrenches(model, fext)?;
+    dynamic_first_pass(model, data, fext)
+}
+
+/// Dynamic half of the first pass after [`super::super::forward_dynamics_kinematics`]: body forces
+/// `f-bar_i = f_i` (2.56) written to `fbar` only,
+/// `M-bar_i = M_i` and the sub-system member kinematics; for a
+/// spin-invariant rotor `f-bar` holds its parent-frame `C^T (M b - f)` instead
+/// ([`crate::subsystem::rotor::parent_frame_bias`]).
+pub(super) fn dynamic_first_pass(
+    model: &Model,
+    data: &mut Data,
+    fext: Option<&[Wrench]>,
+) -> Result<(), DynamicsError> {
+    // Slices zipped (no per-body bounds checks); rotors are filled by the second loop.
+    let bodies = model
+        .bodies
+        .iter()
+        .zip(&data.rotor_constant)
+        .zip(&data.mbar_needed);
+    let state = data.gravity_body.iter().zip(&data.vel);
+    let out = data.mbar.iter_mut().zip(data.fbar.iter_mut());
+    for (i, (((body, rc), &needed), ((g, vel), (mbar, fbar)))) in
+        bodies.zip(state.zip(out)).enumerate()
+    {
+        if rc.is_none() {
+            *fbar = force_of(&body.inertia, g, &vel.ang, fext, i);
+            if needed {
+                *mbar = body.inertia.to_articulated();
+            }
+        }
+    }
+    for k in 0..data.fast_rotors.len() {
+        let i = data.fast_rotors[k];
+        if let Some(rc) = &data.rotor_constant[i] {
+            data.fbar[i] = rotor_bias(model, data, i, rc, fext)?;
+        }
+    }
+    for s in 0..model.subsystems.len() {
+        if data.link_rotors[s].is_none() {
+            subsystem::on::hat_kinematics(model, data, s);
+        }
+    }
+    Ok(())
+}
+
+/// `C^T (M b - f)` of spin-invariant rotor `i` in its parent's frame, including its external
+/// wrench (given in the spun rotor frame, so only then is the spin angle evaluated).
+#[inline]
+fn rotor_bias(
+    model: &Model,
+    data: &Data,
+    i: usize,
+    rc: &RotorConstant,
+    fext: Option<&[Wrench]>,
+) -> Result<Force, DynamicsError> {
+    let body = &model.bodies[i];
+    let (w, g) = match body.parent {
+        Some(p) => (data.vel[p].ang, data.gravity_body[p]),
+        None => (Vector3::zeros(), model.gravity),
+    };
+    let mut h = parent_frame_bias(rc, &w, &g, data.fd_v[rc.v_index]);
+    let Some(f) = fext.map(|f| f[i]).filter(|f| *f != Wrench::zero()) else {
+        return Ok(h);
+    };
+    let x = match &body.joint_model {
+        JointModel::Coupled {
+            mechanism: Mechanism::HarmonicDrive(rotor),
+            ..
+        } => rotor_transform(rotor, &data.rotor_frame[i], data.fd_q[body.q_index]),
+        _ => None,
+    };
+    let Some(x) = x else {
+        return Err(DynamicsError::Unsupported(
+            "external wrench on a rotor with a non-finite spin angle",
+        ));
+    };
+    h -= x.tr_apply_force(&f);
+    Ok(h)
+}

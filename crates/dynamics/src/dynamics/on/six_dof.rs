@@ -1,0 +1,124 @@
+//! The 6-DoF joint steps (Euler ZXZ and free joints) of the O(n) backward and second forward
+//! passes (2.67)-(2.72), (2.66), kept out of line: one such body per model.
+
+use crate::dynamics::solve::check_pivot;
+use crate::kinematics::six;
+use crate::spatial::{ArticulatedInertia, Force, Motion};
+use crate::{Data, DynamicsError};
+use nalgebra::{DVector, Matrix6, Vector6};
+
+/// Backward step of a 6-DoF joint: returns `M-bar - U D^-1 U^T` and `k_i`.
+/// Leaves `M-bar - U D^-1 U^T` in `mbar[i]` and returns `k_i`; a root joint
+/// (`propagate = false`) needs only `p_i`, its parent acceleration being zero.
+#[inline(never)]
+pub(super) fn six_dof_backward(
+    data: &mut Data,
+    i: usize,
+    vi: usize,
+    tau: &DVector<f64>,
+    (propagate, free): (bool, bool),
+) -> Result<Force, DynamicsError> {
+    let mbar = data.mbar[i].to_matrix();
+    let j = data.jacobian6[i];
+    let (u, d) = if free {
+        free_joint_products(&data.mbar[i])
+    } else {
+        let u = mbar * j;
+        let d = j.tr_mul(&u);
+        (u, d)
+    };
+    let chol = d.cholesky().ok_or(DynamicsError::NotPositiveDefinite {
+        index: vi,
+        pivot: d.determinant(),
+    })?;
+    let l = chol.l_dirty();
+    for c in 0..6 {
+        check_pivot(vi + c, l[(c, c)] * l[(c, c)], d[(c, c)])?;
+    }
+    let hat_f = data.mbar[i].apply(&data.bias_acc[i]) - data.fbar[i];
+    let jt_hat = if free {
+        free_tr_mul(&hat_f)
+    } else {
+        j.tr_mul(&hat_f.to_vector())
+    };
+    let rhs = six(tau, vi) - jt_hat;
+    let p = chol.solve(&rhs);
+    data.p6[i] = p;
+    if !propagate {
+        data.pi6[i] = Matrix6::zeros();
+        return Ok(Force::zero());
+    }
+    let pi = chol.solve(&u.transpose());
+    let (b, fbar) = (data.bias_acc[i].to_vector(), data.fbar[i].to_vector());
+    let k = mbar * (b + j * p) - fbar;
+    let ia: Matrix6<f64> = mbar - u * pi;
+    data.pi6[i] = pi;
+    data.mbar[i] = ArticulatedInertia::from_matrix(&((ia + ia.transpose()) * 0.5));
+    Ok(Force::from_vector(&k))
+}
+
+/// `U = M-bar J` and `D = J^T M-bar J` for the free joint's constant `J = [0 E; E 0]`
+/// ([`crate::model::joint::quaternion_jacobian`]): with `M-bar = [A B; B^T C]`,
+/// `U = [B A; C B^T]` and `D = [C B^T; B A]` (block permutations, no products).
+fn free_joint_products(m: &ArticulatedInertia) -> (Matrix6<f64>, Matrix6<f64>) {
+    let (mut u, mut d) = (Matrix6::zeros(), Matrix6::zeros());
+    let bt = m.cross.transpose();
+    u.fixed_view_mut::<3, 3>(0, 0).copy_from(&m.cross);
+    u.fixed_view_mut::<3, 3>(0, 3).copy_from(&m.ang);
+    u.fixed_view_mut::<3, 3>(3, 0).copy_from(&m.lin);
+    u.fixed_view_mut::<3, 3>(3, 3).copy_from(&bt);
+    d.fixed_view_mut::<3, 3>(0, 0).copy_from(&m.lin);
+    d.fixed_view_mut::<3, 3>(0, 3).copy_from(&bt);
+    d.fixed_view_mut::<3, 3>(3, 0).copy_from(&m.cross);
+    d.fixed_view_mut::<3, 3>(3, 3).copy_from(&m.ang);
+    (u, d)
+}
+
+/// `J^T f = [f_lin; f_ang]` for the free joint's constant `J = [0 E; E 0]` (a permutation).
+#[inline]
+fn free_tr_mul(f: &Force) -> Vector6<f64> {
+    Vector6::new(f.lin.x, f.lin.y, f.lin.z, f.ang.x, f.ang.y, f.ang.z)
+}
+
+/// Second forward step of a 6-DoF joint body `i` (2.66): `qddot_i` into `ddq`, returns
+/// `C_i a_p + J_i qddot_i`; out of line (one body per model) to keep the per-body loop small.
+#[inline(never)]
+pub(super) fn six_dof_forward(
+    data: &mut Data,
+    i: usize,
+    vi: usize,
+    (has_parent, ap): (bool, Motion),
+) -> Motion {
+    let qdd = if has_parent {
+        data.p6[i] - data.pi6[i] * ap.to_vector()
+    } else {
+        data.p6[i]
+    };
+    data.ddq.rows_mut(vi, 6).copy_from(&qdd);
+    ap + Motion::from_vector(&(data.jacobian6[i] * qdd))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::joint::quaternion_jacobian;
+
+    /// The free joint's block permutations against the dense products `M J`, `J^T M J`.
+    #[test]
+    fn free_joint_products_match_dense() {
+        let l = Matrix6::from_fn(|i, j| {
+            if j <= i {
+                0.4 + ((5 * i + 3 * j) % 7) as f64
+            } else {
+                0.0
+            }
+        });
+        let m = ArticulatedInertia::from_matrix(&(l * l.transpose()));
+        let (j, dense) = (quaternion_jacobian(), m.to_matrix());
+        let (u, d) = free_joint_products(&m);
+        assert_eq!(u, dense * j);
+        assert_eq!(d, j.transpose() * dense * j);
+        let w = Vector6::new(0.3, -1.2, 0.7, 2.1, -0.4, 0.05);
+        assert_eq!(free_tr_mul(&Force::from_vector(&w)), j.transpose() * w);
+    }
+}
