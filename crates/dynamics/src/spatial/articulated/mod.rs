@@ -1,7 +1,17 @@
 //! Symmetric 6x6 (articulated or composite) inertias `[A B; B^T D]` kept as 3x3 blocks.
+//!
+//! The congruence `C^T I C` of (2.69) is split into the rotation of the blocks
+//! (`congruence`) and the shift by the joint offset (`shift`).
+
+mod congruence;
+mod shift;
+
+pub use congruence::sym_congruence;
 
 use super::{Force, Motion, SpatialTransform};
-use nalgebra::{Matrix3, Matrix6, Vector3};
+use congruence::{axis_congruence, sym_axis_congruence};
+use nalgebra::{Matrix3, Matrix6};
+use shift::shift_into;
 use std::ops::{Add, AddAssign};
 
 /// Symmetric 6x6 inertia `[ang, cross; cross^T, lin]` acting on motions, giving forces.
@@ -160,115 +170,10 @@ impl AddAssign for ArticulatedInertia {
     }
 }
 
-/// Shift of rotated blocks by `r` (parent coordinates), the `[E 0; -r~ E]` factor of `C`:
-/// `cross' = B - (D r~)^T`, `ang' = A - B r~ - (B r~)^T - r~ D r~`, the symmetric `ang'`
-/// evaluated on its upper triangle only (exactly symmetric result); written to `out`
-/// (`ADD = false`) or added to it (`ADD = true`, no temporary inertia).
-#[inline]
-fn shift_into<const ADD: bool>(
-    ang: &Matrix3<f64>,
-    cross: &Matrix3<f64>,
-    lin: Matrix3<f64>,
-    r: &Vector3<f64>,
-    out: &mut ArticulatedInertia,
-) {
-    let dr = mul_skew(&lin, r);
-    let br = mul_skew(cross, r);
-    // (r~ M)_ij = (r x M e_j)_i.
-    let rdr = |i: usize, j: usize| {
-        let (a, b) = ((i + 1) % 3, (i + 2) % 3);
-        r[a] * dr[(b, j)] - r[b] * dr[(a, j)]
-    };
-    let e = |i: usize, j: usize| ang[(i, j)] - br[(i, j)] - br[(j, i)] - rdr(i, j);
-    let (m01, m02, m12) = (e(0, 1), e(0, 2), e(1, 2));
-    let ang = Matrix3::new(e(0, 0), m01, m02, m01, e(1, 1), m12, m02, m12, e(2, 2));
-    let cross = cross - dr.transpose();
-    if ADD {
-        out.ang += ang;
-        out.cross += cross;
-        out.lin += lin;
-    } else {
-        *out = ArticulatedInertia { ang, cross, lin };
-    }
-}
-
-/// `A^T M A` for a rotation `A` about coordinate axis `K` (`A e_K = e_K`): only the plane
-/// `(p, q)` normal to the axis mixes, `T = M A` then `A^T T`, 12 multiplications each.
-#[inline]
-fn axis_congruence<const K: usize>(m: &Matrix3<f64>, a: &Matrix3<f64>) -> Matrix3<f64> {
-    let (p, q) = ((K + 1) % 3, (K + 2) % 3);
-    let (app, apq, aqp, aqq) = (a[(p, p)], a[(p, q)], a[(q, p)], a[(q, q)]);
-    let mut t = *m;
-    for r in 0..3 {
-        let (mp, mq) = (m[(r, p)], m[(r, q)]);
-        t[(r, p)] = mp * app + mq * aqp;
-        t[(r, q)] = mp * apq + mq * aqq;
-    }
-    let mut out = t;
-    for c in 0..3 {
-        let (tp, tq) = (t[(p, c)], t[(q, c)]);
-        out[(p, c)] = app * tp + aqp * tq;
-        out[(q, c)] = apq * tp + aqq * tq;
-    }
-    out
-}
-
-/// `A^T S A` for symmetric `S` and a rotation `A` about coordinate axis `K`: the upper
-/// triangle (18 multiplications), mirrored, so the result is exactly symmetric.
-#[inline]
-fn sym_axis_congruence<const K: usize>(m: &Matrix3<f64>, a: &Matrix3<f64>) -> Matrix3<f64> {
-    let (p, q) = ((K + 1) % 3, (K + 2) % 3);
-    let (app, apq, aqp, aqq) = (a[(p, p)], a[(p, q)], a[(q, p)], a[(q, q)]);
-    // Plane columns of T = S A (rows p, q and K).
-    let (tpp, tqp) = (
-        m[(p, p)] * app + m[(p, q)] * aqp,
-        m[(q, p)] * app + m[(q, q)] * aqp,
-    );
-    let (tpq, tqq) = (
-        m[(p, p)] * apq + m[(p, q)] * aqq,
-        m[(q, p)] * apq + m[(q, q)] * aqq,
-    );
-    let (tkp, tkq) = (
-        m[(K, p)] * app + m[(K, q)] * aqp,
-        m[(K, p)] * apq + m[(K, q)] * aqq,
-    );
-    let opq = app * tpq + aqp * tqq;
-    let mut out = Matrix3::zeros();
-    out[(K, K)] = m[(K, K)];
-    (out[(K, p)], out[(p, K)]) = (tkp, tkp);
-    (out[(K, q)], out[(q, K)]) = (tkq, tkq);
-    out[(p, p)] = app * tpp + aqp * tqp;
-    (out[(p, q)], out[(q, p)]) = (opq, opq);
-    out[(q, q)] = apq * tpq + aqq * tqq;
-    out
-}
-
-/// `A^T S A` for symmetric `S`, computing one triangle (exactly symmetric result).
-#[inline]
-pub fn sym_congruence(s: &Matrix3<f64>, a: &Matrix3<f64>) -> Matrix3<f64> {
-    let t = s * a;
-    let e = |i: usize, j: usize| a.column(i).dot(&t.column(j));
-    let (m00, m01, m02, m11, m12, m22) = (e(0, 0), e(0, 1), e(0, 2), e(1, 1), e(1, 2), e(2, 2));
-    Matrix3::new(m00, m01, m02, m01, m11, m12, m02, m12, m22)
-}
-
-/// `M r~`: row `i` is `m_i x r`.
-#[inline]
-fn mul_skew(m: &Matrix3<f64>, r: &Vector3<f64>) -> Matrix3<f64> {
-    let row = |i: usize| {
-        let (x, y, z) = (m[(i, 0)], m[(i, 1)], m[(i, 2)]);
-        [y * r.z - z * r.y, z * r.x - x * r.z, x * r.y - y * r.x]
-    };
-    let (r0, r1, r2) = (row(0), row(1), row(2));
-    Matrix3::new(
-        r0[0], r0[1], r0[2], r1[0], r1[1], r1[2], r2[0], r2[1], r2[2],
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Isometry3;
+    use nalgebra::{Isometry3, Vector3};
 
     /// Against the dense `C^T I C` for a general (not rigid-body) symmetric inertia.
     #[test]
