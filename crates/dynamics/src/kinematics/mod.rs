@@ -1,0 +1,139 @@
+//! Recursive kinematics (2.33)-(2.37): the first forward recursion (Algorithm 2.2) shared by
+//! every algorithm of the crate, and the public forward-kinematics entry points.
+//!
+//! Split by concept: [`joint`] relative joint kinematics `C_i`, `J_i qdot_i`, `Jdot_i qdot_i`
+//! (2.35)-(2.36) and products with `J_i`; [`coupled`] coupled parts of closed-form mechanisms
+//! (ch. 3); [`rotor`] Harmonic Drive rotor frames (3.1)-(3.2); [`step`] one body step of the
+//! recursion (world pose, `g_i`, `v_i` (2.33), `b_i` (2.37)) and body forces (2.56); this file
+//! the passes over all bodies.
+
+mod coupled;
+mod joint;
+mod rotor;
+mod step;
+
+pub(crate) use joint::{add_projected_force, joint_column, relative_motion, six};
+pub(crate) use rotor::{rotor_frames, rotor_transform};
+pub(crate) use step::{body_force, body_kinematics, force_of};
+
+use crate::check;
+use crate::spatial::Wrench;
+use crate::{Data, DynamicsError, Model};
+use nalgebra::DVector;
+
+/// Positions, velocities and accelerations of all bodies for `(q, v, a)` (2.33)-(2.37).
+///
+/// Fills `x`, `world_rot`, `world_pos`, `vel`, `bias_acc` and `acc` of `data`; `acc` is the
+/// kinematic acceleration (no gravity).
+pub fn forward_kinematics(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    a: &DVector<f64>,
+) -> Result<(), DynamicsError> {
+    check::data(model, data)?;
+    check::configuration(model, q)?;
+    check::vector("v", v, model.nv())?;
+    check::vector("a", a, model.nv())?;
+    for i in 0..model.nbodies() {
+        body_kinematics(model, data, i, q, Some(v));
+    }
+    take_fault(data)?;
+    propagate_accelerations(model, data, Some(a));
+    Ok(())
+}
+
+/// World poses and transforms `C_i` of all bodies for configuration `q`.
+pub fn update_placements(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+) -> Result<(), DynamicsError> {
+    check::data(model, data)?;
+    check::configuration(model, q)?;
+    for i in 0..model.nbodies() {
+        body_kinematics(model, data, i, q, None);
+    }
+    take_fault(data)
+}
+
+/// `a_i = C_i a_p(i) + J_i qddot_i + b_i` (2.34) for all bodies; `qdd = None` means zero.
+pub(crate) fn propagate_accelerations(model: &Model, data: &mut Data, qdd: Option<&DVector<f64>>) {
+    for (i, body) in model.bodies.iter().enumerate() {
+        let mut a = data.bias_acc[i];
+        if let Some(p) = body.parent {
+            a += data.x[i].apply_motion(&data.acc[p]);
+        }
+        if let Some(qdd) = qdd {
+            a += relative_motion(data, i, body, qdd);
+        }
+        data.acc[i] = a;
+    }
+}
+
+/// Error if a mechanism failed during the last kinematics pass (clears the record). Every
+/// kinematics pass ends here, so this also marks the forward-dynamics kinematics as stale.
+pub(crate) fn take_fault(data: &mut Data) -> Result<(), DynamicsError> {
+    data.fd_kinematics = false;
+    match data.mechanism_fault.take() {
+        None => Ok(()),
+        Some((body, source)) => Err(DynamicsError::Mechanism { body, source }),
+    }
+}
+
+/// Full first forward recursion: kinematics and body forces for all bodies (Algorithm 2.2).
+pub(crate) fn first_forward(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    fext: Option<&[Wrench]>,
+) {
+    for i in 0..model.nbodies() {
+        body_kinematics(model, data, i, q, Some(v));
+        body_force(model, data, i, fext);
+    }
+}
+
+/// Kinematic half of the first forward recursion (Algorithm 2.2 without body forces): `C_i`,
+/// world poses, `g_i`, `v_i`, `b_i` and the mechanism loop caches of all bodies except the
+/// spin-invariant Harmonic Drive rotors (see [`crate::subsystem::rotor`]), whose kinematics
+/// the O(n) solve does not need; [`complete_rotor_kinematics`] adds them from the stored `q, v`.
+pub(crate) fn first_forward_kinematics(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+) {
+    // Slice copies (a memcpy) instead of nalgebra's element-wise `copy_from`; the lengths
+    // were checked by the caller (`check::data`, `check::configuration`, `check::vector`).
+    data.fd_q.as_mut_slice().copy_from_slice(q.as_slice());
+    data.fd_v.as_mut_slice().copy_from_slice(v.as_slice());
+    for i in 0..model.nbodies() {
+        if data.rotor_constant[i].is_none() {
+            body_kinematics(model, data, i, q, Some(v));
+        }
+    }
+}
+
+/// Kinematics of the rotors skipped by [`first_forward_kinematics`], from its stored `q, v`.
+pub(crate) fn complete_rotor_kinematics(model: &Model, data: &mut Data) {
+    let (q, v) = (
+        std::mem::take(&mut data.fd_q),
+        std::mem::take(&mut data.fd_v),
+    );
+    for i in 0..model.nbodies() {
+        if data.rotor_constant[i].is_some() {
+            body_kinematics(model, data, i, &q, Some(&v));
+        }
+    }
+    (data.fd_q, data.fd_v) = (q, v);
+}
+
+/// Body forces `f_i` (2.56) of all bodies from the kinematics already in `data`.
+pub(crate) fn body_forces(model: &Model, data: &mut Data, fext: Option<&[Wrench]>) {
+    for i in 0..model.nbodies() {
+        body_force(model, data, i, fext);
+    }
+}

@@ -1,0 +1,96 @@
+//! One body step of the first forward recursion (Algorithm 2.2): world pose, `g_i`, `v_i`
+//! (2.33) and `b_i` (2.37) from the parent's, and the body force `f_i` (2.56).
+
+use super::joint::joint_kinematics;
+use crate::spatial::plane::{General, Plane, RotationOps};
+use crate::spatial::{Force, Motion, RigidInertia, SpatialTransform, Wrench};
+use crate::{Data, Model};
+use nalgebra::{DVector, Vector3};
+
+/// One step of the first forward recursion for body `i`: `C_i`, world pose, `g_i`, `v_i`
+/// (2.33) and `b_i` (2.37); without `v` velocities and `b_i` are zero.
+#[inline]
+pub(crate) fn body_kinematics(
+    model: &Model,
+    data: &mut Data,
+    i: usize,
+    q: &DVector<f64>,
+    v: Option<&DVector<f64>>,
+) {
+    let (x, rel, cj) = joint_kinematics(model, data, i, q, v);
+    match model.bodies[i].parent {
+        None => {
+            data.world_rot[i] = x.rot.transpose();
+            data.world_pos[i] = x.trans;
+            data.gravity_body[i] = x.rot * model.gravity;
+            data.vel[i] = rel;
+            data.bias_acc[i] = cj;
+        }
+        Some(p) => {
+            let v = v.is_some();
+            match data.plane_axis[i] {
+                Some(0) => child_step(data, i, p, &x, &Plane::<0>(&x.rot), rel, cj, v),
+                Some(1) => child_step(data, i, p, &x, &Plane::<1>(&x.rot), rel, cj, v),
+                Some(_) => child_step(data, i, p, &x, &Plane::<2>(&x.rot), rel, cj, v),
+                None => child_step(data, i, p, &x, &General(&x.rot), rel, cj, v),
+            }
+        }
+    }
+    data.x[i] = x;
+}
+
+/// World pose, `g_i`, `v_i` (2.33) and `b_i` (2.37) of body `i` from its parent `p`, with the
+/// products by `A = x.rot` done by `r` (general or about a coordinate axis).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn child_step<R: RotationOps>(
+    data: &mut Data,
+    i: usize,
+    p: usize,
+    x: &SpatialTransform,
+    r: &R,
+    rel: Motion,
+    cj: Motion,
+    with_velocity: bool,
+) {
+    data.world_rot[i] = r.compose_tr(&data.world_rot[p]);
+    data.world_pos[i] = data.world_pos[p] + data.world_rot[p] * x.trans;
+    data.gravity_body[i] = r.mul(&data.gravity_body[p]);
+    if with_velocity {
+        // C v_p = [A w_p; A v_p + (A w_p) x (A r)] shares `A r` with the bias (2.37).
+        let w = r.mul(&data.vel[p].ang);
+        let rk = r.mul(&x.trans);
+        let vp = Motion::new(w, r.mul(&data.vel[p].lin) + w.cross(&rk));
+        data.vel[i] = vp + rel;
+        data.bias_acc[i] = Motion::new(
+            w.cross(&rel.ang) + cj.ang,
+            w.cross(&(w.cross(&rk) + rel.lin * 2.0)) + cj.lin,
+        );
+    } else {
+        data.vel[i] = Motion::zero();
+        data.bias_acc[i] = Motion::zero();
+    }
+}
+
+/// Body force `f_i = f_ext,i + f_g,i - h_i` of (2.56) (Algorithm 2.1, step 2).
+#[inline]
+pub(crate) fn body_force(model: &Model, data: &mut Data, i: usize, fext: Option<&[Wrench]>) {
+    let w = data.vel[i].ang;
+    data.force[i] = force_of(&model.bodies[i].inertia, &data.gravity_body[i], &w, fext, i);
+}
+
+/// `f_ext,i + f_g,i - h_i` of (2.56) from gravity `g` and angular velocity `w` (body axes).
+#[inline(always)]
+pub(crate) fn force_of(
+    inertia: &RigidInertia,
+    g: &Vector3<f64>,
+    w: &Vector3<f64>,
+    fext: Option<&[Wrench]>,
+    i: usize,
+) -> Force {
+    let mut f = inertia.gravity_force(g) - inertia.bias_force(w);
+    if let Some(fext) = fext {
+        f += fext[i];
+    }
+    f
+}
