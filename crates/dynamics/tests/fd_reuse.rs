@@ -9,6 +9,7 @@
 mod loop_support;
 mod rotor_support;
 
+use biped_dynamics::dynamics::forward_dynamics_kinematics_current as current;
 use biped_dynamics::{
     center_of_mass, centroidal_momentum, centroidal_momentum_current, forward_dynamics,
     forward_dynamics_kinematics, forward_dynamics_solve, forward_kinematics, inverse_dynamics,
@@ -119,6 +120,10 @@ fn one_ulp_in_q_or_v_recomputes() {
     for (seed, model) in models() {
         let (q, v, tau) = state(&model, seed + 7);
         let mut data = Data::new(&model);
+        assert!(
+            !current(&data, q.as_slice(), v.as_slice()),
+            "fresh data holds no pass"
+        );
         let last_q = model.nq() - 1;
         let cases = [
             (ulp(&q, 0), v.clone()),
@@ -128,6 +133,8 @@ fn one_ulp_in_q_or_v_recomputes() {
         ];
         for (q1, v1) in cases {
             forward_dynamics_kinematics(&model, &mut data, &q, &v).unwrap();
+            assert!(current(&data, q.as_slice(), v.as_slice()));
+            assert!(!current(&data, q1.as_slice(), v1.as_slice()));
             poison(&mut data);
             forward_dynamics_kinematics(&model, &mut data, &q1, &v1).unwrap();
             assert!(recomputed(&model, &data), "seed {seed}: stale pass reused");
@@ -163,6 +170,7 @@ fn intervening_kinematics_calls_force_a_new_pass() {
             let mut data = Data::new(&model);
             forward_dynamics_kinematics(&model, &mut data, &q, &v).unwrap();
             other(&mut data);
+            assert!(!current(&data, q.as_slice(), v.as_slice()));
             assert_eq!(
                 forward_dynamics_solve(&model, &mut data, &tau, None, Algorithm::On).cloned(),
                 Err(DynamicsError::KinematicsNotCurrent)

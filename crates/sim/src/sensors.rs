@@ -71,7 +71,7 @@ impl Sensors {
     pub fn update(&mut self, plant: &mut Plant, t: f64, z: &[f64]) -> Result<(), SimError> {
         let l = plant.layout();
         let dt = self.prev.map_or(0.0, |(tp, _)| t - tp);
-        plant.outputs(z)?;
+        plant.state_outputs(z)?;
         let (q, v) = (&z[l.q()], &z[l.v()]);
         let mode = plant.mode();
         for (k, a) in plant.actuators().iter().enumerate() {

@@ -4,6 +4,8 @@
 //! `forward_dynamics` in one call. Lola Type 2 and Type 3, all drive modes, random states
 //! with feet in and out of contact, unnormalised quaternions (as inside an RK4 step).
 
+mod common;
+
 use biped_dynamics::{forward_dynamics, Algorithm, Data, Wrench};
 use biped_robots::lola::LolaType;
 use biped_sim::controller::Commands;
@@ -69,20 +71,7 @@ fn compare(kind: LolaType, mode: DriveMode, seed: u64) -> usize {
     let mut p = lp.plant;
     let l = p.layout();
     let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
-    let mut z = sc.z0.clone();
-    // Random joint and base motion, sink/lift the base so that some points touch, bristles
-    // and currents away from zero, a slightly unnormalised quaternion.
-    for x in &mut z[l.q().start + 7..l.q().end] {
-        *x += rng.random_range(-0.05..0.05);
-    }
-    z[2] += rng.random_range(-0.002..0.003);
-    z[6] *= 1.0 + 1e-4;
-    for x in &mut z[l.v()] {
-        *x = rng.random_range(-0.5..0.5);
-    }
-    for x in &mut z[l.contact().start..] {
-        *x = rng.random_range(-1e-4..1e-4);
-    }
+    let z = common::random_stand_state(&p, &sc.z0, &mut rng);
     let cmd: Vec<f64> = (0..p.actuators().len())
         .map(|_| rng.random_range(-2.0..2.0))
         .collect();

@@ -68,7 +68,7 @@ pub fn forward_dynamics_kinematics(
     check::data(model, data)?;
     check::configuration(model, q)?;
     check::vector("v", v, model.nv())?;
-    if data.fd_kinematics && same_bits(&data.fd_q, q) && same_bits(&data.fd_v, v) {
+    if forward_dynamics_kinematics_current(data, q.as_slice(), v.as_slice()) {
         return Ok(());
     }
     first_forward_kinematics(model, data, q, v);
@@ -77,11 +77,17 @@ pub fn forward_dynamics_kinematics(
     Ok(())
 }
 
-/// True if `a` and `b` hold the same `f64` bit patterns (equal lengths checked by the caller;
-/// `0.0` and `-0.0` differ, which only costs a recomputation).
+/// True if `data` holds the kinematics of [`forward_dynamics_kinematics`] at `(q, v)`, bitwise
+/// equal (no other kinematics call since): a call with them would be skipped, and readers of
+/// that pass (e.g. [`crate::centroidal_momentum_current`]) see exactly this state.
+pub fn forward_dynamics_kinematics_current(data: &Data, q: &[f64], v: &[f64]) -> bool {
+    data.fd_kinematics && same_bits(data.fd_q.as_slice(), q) && same_bits(data.fd_v.as_slice(), v)
+}
+
+/// True if `a` and `b` hold the same `f64` bit patterns (`0.0` and `-0.0` differ, which only
+/// costs a recomputation).
 #[inline]
-fn same_bits(a: &DVector<f64>, b: &DVector<f64>) -> bool {
-    let (a, b) = (a.as_slice(), b.as_slice());
+fn same_bits(a: &[f64], b: &[f64]) -> bool {
     a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
 }
 

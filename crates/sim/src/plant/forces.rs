@@ -6,19 +6,48 @@
 //! loops that pass closed, [`crate::drive::Actuator::motor_row_cached`]), then
 //! [`biped_dynamics::forward_dynamics_solve`]. So one evaluation runs one kinematics pass.
 //!
-//! [`Plant::outputs`] (contact and drive outputs without a dynamics call) takes the foot
-//! states from each foot's own joint chain ([`crate::contact::BodyChain`]) instead, which is
-//! cheaper than a kinematics pass over all bodies when no dynamics follows; its motor rows
-//! miss the loop caches and close the loops once. `tests/sim_fastpath.rs` checks both routes
+//! [`Plant::state_outputs`] (the sensors' sample) runs the same first half, the state pass:
+//! the kinematics it leaves in the plant's workspace serve the recorder (CoM, `h_G`) and are
+//! reused by the first Runge-Kutta stage at that state (`forward_dynamics_kinematics` skips a
+//! pass at the `(q, v)` it holds). [`Plant::outputs`] (contact and drive outputs for other
+//! users) takes the foot states from each foot's own joint chain
+//! ([`crate::contact::BodyChain`]) instead, cheaper than a pass over all bodies when nothing
+//! else reads it; its motor rows miss the loop caches and close the loops once. `tests/sim_fastpath.rs` checks both routes
 //! against a reference assembled from the general parts (chains, rows re-evaluated from the
 //! mechanisms, `forward_dynamics` in one call).
 
-use super::Plant;
+use super::{Plant, PlantOutputs};
 use crate::drive::DriveMode;
 use crate::error::{finite, SimError};
 use biped_dynamics::{forward_dynamics_kinematics, forward_dynamics_solve};
 
+/// One of the force routes (`chain_forces`, `pass_forces`): state `z`, rates into `zdot`.
+type ForcePass = fn(&mut Plant, &[f64], &mut [f64]) -> Result<(), SimError>;
+
 impl Plant {
+    /// Contact and drive outputs at `z` with the held command from the foot chains (no
+    /// dynamics call, the plant's workspace untouched); the contact-state rates computed on the
+    /// way are discarded.
+    pub fn outputs(&mut self, z: &[f64]) -> Result<&PlantOutputs, SimError> {
+        self.with_scratch(z, Self::chain_forces)
+    }
+
+    /// Contact and drive outputs at `z` with the held command from the forward-dynamics
+    /// kinematics pass on the plant's workspace (the state pass, no solve): the same values a
+    /// right-hand side at `z` gives. The pass stays in [`Self::data`] for readers (CoM,
+    /// momentum) and for the next right-hand side at `z`, which reuses it.
+    pub fn state_outputs(&mut self, z: &[f64]) -> Result<&PlantOutputs, SimError> {
+        self.with_scratch(z, Self::pass_forces)
+    }
+
+    /// Runs `forces` at `z` with the scratch rate buffer; the outputs.
+    fn with_scratch(&mut self, z: &[f64], forces: ForcePass) -> Result<&PlantOutputs, SimError> {
+        let mut scratch = std::mem::take(&mut self.scratch);
+        let r = forces(self, z, &mut scratch);
+        self.scratch = scratch;
+        r.map(|_| &self.out)
+    }
+
     /// Checks the lengths of `z` and `zdot` and copies `q`, `v` of `z` into the work vectors.
     fn load(&mut self, z: &[f64], zdot: &[f64]) -> Result<(), SimError> {
         if zdot.len() != self.layout.dim() {
@@ -91,9 +120,10 @@ impl Plant {
         Ok(())
     }
 
-    /// The right-hand side with typed errors (one kinematics pass, see the module docs).
-    pub(super) fn eval(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
-        self.rhs_count += 1;
+    /// The state pass at `z`: the forward-dynamics kinematics on the plant's workspace (skipped
+    /// when it already holds `z`'s `(q, v)`), contact forces from its foot states, then drive and
+    /// gear torques; contact and current rates into `zdot`.
+    pub(super) fn pass_forces(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
         self.load(z, zdot)?;
         let l = self.layout;
         forward_dynamics_kinematics(&self.model, &mut self.data, &self.q, &self.v)?;
@@ -101,7 +131,14 @@ impl Plant {
         let out = &mut self.out.contact;
         self.contact
             .evaluate_from(&self.data, s, sdot, &mut self.fext, out);
-        self.drive_forces(z, zdot)?;
+        self.drive_forces(z, zdot)
+    }
+
+    /// The right-hand side with typed errors (one kinematics pass, see the module docs).
+    pub(super) fn eval(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
+        self.rhs_count += 1;
+        self.pass_forces(z, zdot)?;
+        let l = self.layout;
         let (m, algo) = (&self.model, self.config.algorithm);
         let ddq = forward_dynamics_solve(m, &mut self.data, &self.tau, Some(&self.fext), algo)?;
         finite("qddot", ddq.as_slice())?;

@@ -265,16 +265,7 @@ impl Plant {
         Ok(z)
     }
 
-    /// Contact and drive outputs at `z` with the held command (no dynamics call); the
-    /// contact-state rates computed on the way are discarded.
-    pub fn outputs(&mut self, z: &[f64]) -> Result<&PlantOutputs, SimError> {
-        let mut scratch = std::mem::take(&mut self.scratch);
-        let r = self.chain_forces(z, &mut scratch);
-        self.scratch = scratch;
-        r.map(|_| &self.out)
-    }
-
-    /// Outputs of the last [`Self::outputs`] or right-hand side.
+    /// Outputs of the last [`Self::outputs`], [`Self::state_outputs`] or right-hand side.
     pub fn last_outputs(&self) -> &PlantOutputs {
         &self.out
     }

@@ -2,18 +2,21 @@
 //! (`<foot>.fx .. <foot>.tz`, world axes, torque about the sole reference point) and the
 //! centre of pressure, per actuator the command `cmd[<joint>]` and the motor current
 //! `i[<joint>]`, and optionally the CoM and the centroidal angular momentum `L_G` about it
-//! (one kinematics pass per recorded frame, [`super::momentum`]).
+//! ([`biped_dynamics::centroidal_momentum`]). Those are read from the forward-dynamics pass the
+//! plant's workspace holds when it is at the frame's `(q, v)` (the sensors' state pass,
+//! [`Plant::state_outputs`], leaves it there every control cycle), so recording adds no
+//! kinematics pass; otherwise a pass on an own workspace gives the same values bit for bit.
 
 use super::Frame;
 use crate::error::SimError;
 use crate::plant::Plant;
 use crate::record::{Recorder, SignalId};
-use biped_dynamics::centroidal_momentum;
-use biped_dynamics::{Data, Model};
+use biped_dynamics::dynamics::forward_dynamics_kinematics_current;
+use biped_dynamics::{centroidal_momentum, centroidal_momentum_current, CentroidalMomentum, Data};
 use nalgebra::DVector;
 
-/// Own model copy, workspace and `(q, v)` buffers for the centroidal momentum.
-type MomentumWork = (Model, Data, DVector<f64>, DVector<f64>);
+/// Own workspace and `(q, v)` buffers for the centroidal momentum when the plant's is elsewhere.
+type MomentumWork = (Data, DVector<f64>, DVector<f64>);
 
 /// Signal names and a reusable value buffer (own kinematics workspace for `L_G`).
 pub struct Signals {
@@ -24,8 +27,7 @@ pub struct Signals {
 }
 
 impl Signals {
-    /// Signals of `plant`; `momentum` adds `com.*` and `L_G.*` (one kinematics pass per
-    /// recorded frame).
+    /// Signals of `plant`; `momentum` adds `com.*` and `L_G.*` (see the module docs).
     pub fn new(plant: &Plant, momentum: bool) -> Self {
         let l = plant.layout();
         let mut names: Vec<String> = (0..l.nq).map(|i| format!("q[{i}]")).collect();
@@ -43,9 +45,8 @@ impl Signals {
         }
         let momentum = momentum.then(|| {
             names.extend(["com.x", "com.y", "com.z", "L_G.x", "L_G.y", "L_G.z"].map(String::from));
-            let m = plant.model().clone();
-            let d = Data::new(&m);
-            (m, d, DVector::zeros(l.nq), DVector::zeros(l.nv))
+            let d = Data::new(plant.model());
+            (d, DVector::zeros(l.nq), DVector::zeros(l.nv))
         });
         let values = Vec::with_capacity(names.len());
         Self {
@@ -76,10 +77,8 @@ impl Signals {
         }
         v.extend_from_slice(&frame.commands.values);
         v.extend_from_slice(&frame.sensors.motor_currents);
-        if let Some((m, d, q, qd)) = self.momentum.as_mut() {
-            q.as_mut_slice().copy_from_slice(&frame.z[l.q()]);
-            qd.as_mut_slice().copy_from_slice(&frame.z[l.v()]);
-            let s = centroidal_momentum(m, d, q, qd)?;
+        if let Some(work) = self.momentum.as_mut() {
+            let s = frame_momentum(frame, work)?;
             let (com, h) = (s.com, s.momentum);
             v.extend_from_slice(&[com.x, com.y, com.z, h.ang.x, h.ang.y, h.ang.z]);
         }
@@ -102,4 +101,19 @@ impl Signals {
         }
         Ok(())
     }
+}
+
+/// CoM and `h_G` at the frame's state: from the plant's workspace when it holds the
+/// forward-dynamics pass at exactly that `(q, v)`, else by a pass on `work`.
+fn frame_momentum(frame: &Frame, work: &mut MomentumWork) -> Result<CentroidalMomentum, SimError> {
+    let l = frame.plant.layout();
+    let (q, v) = (&frame.z[l.q()], &frame.z[l.v()]);
+    let (model, data) = (frame.plant.model(), frame.plant.data());
+    if forward_dynamics_kinematics_current(data, q, v) {
+        return Ok(centroidal_momentum_current(model, data)?);
+    }
+    let (d, qw, vw) = work;
+    qw.as_mut_slice().copy_from_slice(q);
+    vw.as_mut_slice().copy_from_slice(v);
+    Ok(centroidal_momentum(model, d, qw, vw)?)
 }

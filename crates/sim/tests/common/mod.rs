@@ -81,3 +81,24 @@ pub fn integrate(
         each(t1, z, plant);
     }
 }
+
+/// A random state of a standing Lola plant near `z0`: joint angles moved by up to 0.05 rad,
+/// the base sunk or lifted a few mm (some sole points touch, some not), a slightly
+/// unnormalised quaternion (as inside an RK4 step), random velocities, bristles and currents.
+pub fn random_stand_state(plant: &Plant, z0: &[f64], rng: &mut rand::rngs::StdRng) -> Vec<f64> {
+    use rand::Rng;
+    let l = plant.layout();
+    let mut z = z0.to_vec();
+    for x in &mut z[l.q().start + 7..l.q().end] {
+        *x += rng.random_range(-0.05..0.05);
+    }
+    z[2] += rng.random_range(-0.002..0.003);
+    z[6] *= 1.0 + 1e-4;
+    for x in &mut z[l.v()] {
+        *x = rng.random_range(-0.5..0.5);
+    }
+    for x in &mut z[l.contact().start..] {
+        *x = rng.random_range(-1e-4..1e-4);
+    }
+    z
+}
