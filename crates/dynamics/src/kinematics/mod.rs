@@ -9,6 +9,7 @@
 
 mod coupled;
 mod joint;
+mod plane;
 mod rotor;
 mod step;
 

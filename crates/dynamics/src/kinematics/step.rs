@@ -2,15 +2,44 @@
 //! (2.33) and `b_i` (2.37) from the parent's, and the body force `f_i` (2.56).
 
 use super::joint::joint_kinematics;
+use super::plane::plane_revolute_step;
+use crate::model::joint::Joint;
 use crate::spatial::plane::{General, Plane, RotationOps};
-use crate::spatial::{Force, Motion, RigidInertia, SpatialTransform, Wrench};
+use crate::spatial::{Force, Motion, RigidInertia, SpatialTransform, SubspaceKind, Wrench};
 use crate::{Data, Model};
 use nalgebra::{DVector, Vector3};
 
 /// One step of the first forward recursion for body `i`: `C_i`, world pose, `g_i`, `v_i`
-/// (2.33) and `b_i` (2.37); without `v` velocities and `b_i` are zero.
+/// (2.33) and `b_i` (2.37); without `v` velocities and `b_i` are zero. Revolute joints about a
+/// coordinate axis of an unrotated placement take the written-out path of [`super::plane`].
 #[inline]
 pub(crate) fn body_kinematics(
+    model: &Model,
+    data: &mut Data,
+    i: usize,
+    q: &DVector<f64>,
+    v: Option<&DVector<f64>>,
+) {
+    let body = &model.bodies[i];
+    if let (Some(k), Some(p), Some(v), Joint::Revolute(ax) | Joint::Rotor(ax)) =
+        (data.plane_axis[i], body.parent, v, &body.joint)
+    {
+        if ax.kind == SubspaceKind::Angular {
+            let (qi, qd) = (q[body.q_index], v[body.v_index]);
+            match k {
+                0 => plane_revolute_step::<0>(model, data, i, p, ax, qi, qd),
+                1 => plane_revolute_step::<1>(model, data, i, p, ax, qi, qd),
+                _ => plane_revolute_step::<2>(model, data, i, p, ax, qi, qd),
+            }
+            return;
+        }
+    }
+    general_body_kinematics(model, data, i, q, v);
+}
+
+/// [`body_kinematics`] by the general joint kinematics and child step (every joint type).
+#[inline]
+pub(crate) fn general_body_kinematics(
     model: &Model,
     data: &mut Data,
     i: usize,

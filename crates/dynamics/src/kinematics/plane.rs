@@ -1,0 +1,157 @@
+//! Body step of the first forward recursion (2.33)-(2.37) for a revolute (or geared-rotor)
+//! joint about coordinate axis `K` of an unrotated placement (`Data::plane_axis == Some(K)`):
+//! `A_kp = Rot_K(q)^T` has four non-trivial entries, `J_i qdot_i = [omega e_K; 0]` and
+//! `Jdot_i qdot_i = 0`, so the products of the general step are written out with these zeros
+//! dropped. Same results as the general step ([`super::step`]) up to the sign of zeros.
+
+use crate::spatial::{sin_cos, JointAxis, Motion, SpatialTransform};
+use crate::{Data, Model};
+use nalgebra::{Matrix3, Vector3};
+
+/// `A v` for `A = Rot_K(angle)^T` given by `(s, c)` (only the plane normal to `e_K` mixes).
+#[inline(always)]
+fn rot_mul<const K: usize>(s: f64, c: f64, v: &Vector3<f64>) -> Vector3<f64> {
+    let (a, b) = ((K + 1) % 3, (K + 2) % 3);
+    let mut out = *v;
+    out[a] = c * v[a] + s * v[b];
+    out[b] = c * v[b] - s * v[a];
+    out
+}
+
+/// `C_i`, world pose, `g_i`, `v_i` (2.33) and `b_i` (2.37) of body `i` with parent `p`, joint
+/// axis `ax` (angular, about `e_K`) at coordinate `q` and rate `qd`.
+#[inline(always)]
+pub(super) fn plane_revolute_step<const K: usize>(
+    model: &Model,
+    data: &mut Data,
+    i: usize,
+    p: usize,
+    ax: &JointAxis,
+    q: f64,
+    qd: f64,
+) {
+    let (a, b) = ((K + 1) % 3, (K + 2) % 3);
+    let (s, c) = sin_cos(q * ax.scale);
+    let trans = model.bodies[i].placement_x.trans;
+    // World rotation `W_p A^T`: columns a and b mix, column K is the parent's.
+    let wp = &data.world_rot[p];
+    let (ca, cb) = (wp.column(a).into_owned(), wp.column(b).into_owned());
+    let mut w_rot = *wp;
+    w_rot.set_column(a, &(ca * c + cb * s));
+    w_rot.set_column(b, &(cb * c - ca * s));
+    data.world_pos[i] = data.world_pos[p] + wp * trans;
+    data.world_rot[i] = w_rot;
+    data.gravity_body[i] = rot_mul::<K>(s, c, &data.gravity_body[p]);
+    // C v_p = [A w_p; A v_p + (A w_p) x (A r)], plus J qd = omega e_K.
+    let vp = data.vel[p];
+    let w = rot_mul::<K>(s, c, &vp.ang);
+    let rk = rot_mul::<K>(s, c, &trans);
+    let lin = rot_mul::<K>(s, c, &vp.lin) + w.cross(&rk);
+    let omega = ax.scale * qd;
+    let mut ang = w;
+    ang[K] += omega;
+    data.vel[i] = Motion::new(ang, lin);
+    // b = [w x (omega e_K); w x (w x r)] (2.37) with `Jdot qd = 0`, no relative linear motion.
+    let mut bias_ang = Vector3::zeros();
+    bias_ang[a] = w[b] * omega;
+    bias_ang[b] = -(w[a] * omega);
+    data.bias_acc[i] = Motion::new(bias_ang, w.cross(&w.cross(&rk)));
+    let mut rot = Matrix3::identity();
+    rot[(a, a)] = c;
+    rot[(a, b)] = s;
+    rot[(b, a)] = -s;
+    rot[(b, b)] = c;
+    data.x[i] = SpatialTransform::new(rot, trans);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::step::{body_kinematics, general_body_kinematics};
+    use crate::model::{BodySpec, JointModel, ModelBuilder};
+    use crate::spatial::RigidInertia;
+    use crate::{Data, Model};
+    use nalgebra::{DVector, Isometry3, Matrix3, Translation3, UnitQuaternion, Vector3};
+    use proptest::prelude::*;
+    use rand::{Rng, SeedableRng};
+
+    /// Random tree: revolute joints about coordinate axes (most placements translations only,
+    /// some rotated) and leaf geared rotors about coordinate axes, each beside its driver (on
+    /// the driver's parent, like a Harmonic Drive rotor).
+    fn plane_tree(seed: u64) -> Model {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+        let axes = [Vector3::x_axis(), Vector3::y_axis(), Vector3::z_axis()];
+        let inertia = RigidInertia::new(1.0, Vector3::new(0.1, 0.0, 0.0), Matrix3::identity())
+            .expect("valid inertia");
+        let mut b = ModelBuilder::new();
+        // (body, parent) of the revolute bodies.
+        let mut revolute: Vec<(usize, Option<usize>)> = Vec::new();
+        for i in 0..10 {
+            let t = Vector3::new(rng.random(), rng.random(), rng.random()) * 0.4;
+            let rot = if rng.random_range(0..4) == 0 {
+                UnitQuaternion::from_euler_angles(rng.random(), rng.random(), rng.random())
+            } else {
+                UnitQuaternion::identity()
+            };
+            let axis = axes[rng.random_range(0..3)];
+            let (joint, parent) = if i > 1 && rng.random_range(0..3) == 0 {
+                let (driver, parent) = revolute[rng.random_range(1..revolute.len())];
+                let ratio = rng.random_range(-100.0..100.0);
+                (
+                    JointModel::GearedRotor {
+                        axis,
+                        ratio,
+                        driver,
+                    },
+                    parent,
+                )
+            } else {
+                let parent = (i > 0).then(|| revolute[rng.random_range(0..revolute.len())].0);
+                (JointModel::Revolute { axis }, parent)
+            };
+            let geared = matches!(joint, JointModel::GearedRotor { .. });
+            let id = b
+                .add_body(BodySpec {
+                    name: format!("b{i}"),
+                    joint_name: format!("j{i}"),
+                    parent,
+                    joint,
+                    placement: Isometry3::from_parts(Translation3::from(t), rot),
+                    inertia,
+                })
+                .expect("body");
+            if !geared {
+                revolute.push((id, parent));
+            }
+        }
+        b.build().expect("model")
+    }
+
+    proptest! {
+        /// The written-out plane step equals the general step (values equal, zeros up to sign)
+        /// for every body and output, at random states of random plane trees.
+        #[test]
+        fn plane_step_equals_general_step(
+            seed in 0u64..64,
+            q in prop::collection::vec(-7.0f64..7.0, 10),
+            v in prop::collection::vec(-5.0f64..5.0, 10),
+        ) {
+            let model = plane_tree(seed);
+            let n = model.nv();
+            let (q, v) = (DVector::from_column_slice(&q[..n]), DVector::from_column_slice(&v[..n]));
+            let (mut fast, mut general) = (Data::new(&model), Data::new(&model));
+            let mut planes = 0;
+            for i in 0..model.nbodies() {
+                planes += usize::from(fast.plane_axis[i].is_some());
+                body_kinematics(&model, &mut fast, i, &q, Some(&v));
+                general_body_kinematics(&model, &mut general, i, &q, Some(&v));
+                prop_assert_eq!(fast.x[i], general.x[i]);
+                prop_assert_eq!(fast.world_rot[i], general.world_rot[i]);
+                prop_assert_eq!(fast.world_pos[i], general.world_pos[i]);
+                prop_assert_eq!(fast.gravity_body[i], general.gravity_body[i]);
+                prop_assert_eq!(fast.vel[i], general.vel[i]);
+                prop_assert_eq!(fast.bias_acc[i], general.bias_acc[i]);
+            }
+            prop_assert!(planes > 0);
+        }
+    }
+}
