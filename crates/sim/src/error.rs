@@ -85,6 +85,9 @@ pub(crate) fn positive(what: &str, x: f64, allow_zero: bool) -> Result<(), SimEr
 
 /// Index of the first non-finite entry of `x`, as an error.
 pub(crate) fn finite(what: &'static str, x: &[f64]) -> Result<(), SimError> {
+    if crate::ode::all_finite(x) {
+        return Ok(());
+    }
     match x.iter().position(|v| !v.is_finite()) {
         Some(index) => Err(SimError::NonFinite { what, index }),
         None => Ok(()),

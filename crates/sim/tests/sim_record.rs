@@ -59,3 +59,32 @@ fn flying_robot_records_conserved_centroidal_momentum_and_writes_csv() {
     assert_eq!(text.lines().count(), 302);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A recorder whose columns do not line up with the signals (some registered before) gets the
+/// same values per name as a fresh one (the block write and the per-signal write agree).
+#[test]
+fn recording_into_a_prefilled_recorder_matches_a_fresh_one() {
+    let mut lp = lola_plant(LolaType::Type2, PlantConfig::default()).unwrap();
+    let opts = ScenarioOptions {
+        duration: Some(0.01),
+        ..ScenarioOptions::lola()
+    };
+    let sc = build(ScenarioKind::Stand, &mut lp.plant, &opts).unwrap();
+    let (mut a, mut b) = (Signals::new(&lp.plant, true), Signals::new(&lp.plant, true));
+    let (mut fresh, mut mixed) = (Recorder::new(), Recorder::new());
+    mixed.register("extra").unwrap();
+    mixed.register("v[3]").unwrap();
+    let (_, _) = sc
+        .run(lp.plant, Method::Rk4, &mut |f| {
+            a.record(f, &mut fresh)?;
+            b.record(f, &mut mixed)
+        })
+        .unwrap();
+    assert_eq!(fresh.len(), 11);
+    for name in a.names() {
+        let (x, y) = (fresh.column(name).unwrap(), mixed.column(name).unwrap());
+        assert!(x.iter().all(|v| v.is_finite()), "{name}");
+        assert_eq!(x, y, "{name}");
+    }
+    assert!(mixed.column("extra").unwrap().iter().all(|v| v.is_nan()));
+}

@@ -20,6 +20,8 @@ mod settings;
 mod tableau;
 mod work;
 
+pub(crate) use work::all_finite;
+
 pub use error::{ConfigError, IntegrateError, Quantity};
 pub use integrator::Integrator;
 pub use settings::{Method, ParseMethodError, Settings, StepStats};

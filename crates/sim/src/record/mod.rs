@@ -23,6 +23,13 @@ use std::path::Path;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct SignalId(usize);
 
+impl SignalId {
+    /// Position of the signal's (first) column in [`Recorder::column_names`].
+    pub fn column(self) -> usize {
+        self.0
+    }
+}
+
 /// A registered signal: a scalar column or a block of vector columns.
 #[derive(Debug, Clone, Copy)]
 struct Signal {

@@ -22,6 +22,8 @@ type MomentumWork = (Data, DVector<f64>, DVector<f64>);
 pub struct Signals {
     names: Vec<String>,
     ids: Vec<SignalId>,
+    /// The ids are consecutive columns (the usual case): a row is written as one block.
+    block: bool,
     values: Vec<f64>,
     momentum: Option<MomentumWork>,
 }
@@ -52,6 +54,7 @@ impl Signals {
         Self {
             names,
             ids: Vec::new(),
+            block: false,
             values,
             momentum,
         }
@@ -93,9 +96,14 @@ impl Signals {
             for n in &self.names {
                 self.ids.push(rec.register(n).map_err(out)?);
             }
+            let first = self.ids.first().map_or(0, |id| id.column());
+            self.block = (self.ids.iter().enumerate()).all(|(k, id)| id.column() == first + k);
         }
         rec.sample(frame.t).map_err(out)?;
         self.values(frame)?;
+        if let Some(&first) = self.ids.first().filter(|_| self.block) {
+            return rec.set_id(first, &self.values).map_err(out);
+        }
         for (id, v) in self.ids.iter().zip(&self.values) {
             rec.set_id(*id, std::slice::from_ref(v)).map_err(out)?;
         }
