@@ -87,10 +87,14 @@ pub fn forward_dynamics_kinematics_current(data: &Data, q: &[f64], v: &[f64]) ->
 }
 
 /// True if `a` and `b` hold the same `f64` bit patterns (`0.0` and `-0.0` differ, which only
-/// costs a recomputation).
+/// costs a recomputation); a branch-free fold of the XORed bits (vectorised).
 #[inline]
 fn same_bits(a: &[f64], b: &[f64]) -> bool {
-    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+    a.len() == b.len()
+        && a.iter()
+            .zip(b)
+            .fold(0, |acc, (x, y)| acc | (x.to_bits() ^ y.to_bits()))
+            == 0
 }
 
 /// Second phase of forward dynamics: body forces (2.56) with `tau` and optional external body

@@ -94,8 +94,8 @@ impl Plant {
     fn drive_forces(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
         let l = self.layout;
         let (q, v) = (self.q.as_slice(), self.v.as_slice());
-        self.tau.fill(0.0);
         let tau = self.tau.as_mut_slice();
+        tau.fill(0.0);
         let mode = self.config.mode;
         let voltage = mode == DriveMode::Voltage;
         let currents = l.currents().start;
