@@ -100,6 +100,9 @@ pub struct Data {
     /// Coordinate axis (0, 1, 2) of a revolute joint whose placement is a pure translation, so
     /// that `C_i` rotates about that axis ([`ArticulatedInertia::add_tr_transform_axis_to`]), per body.
     pub(crate) plane_axis: Vec<Option<usize>>,
+    /// Per body: the joint placement is the identity, so a coupled part's `C` is its relative
+    /// pose alone (no placement products in the kinematics).
+    pub(crate) unplaced: Vec<bool>,
     /// Last closed ankle slider-crank loop, reused by the actuator's other parts.
     pub(crate) ankle_loop: Option<AnkleLoop>,
     /// Last closed knee loop, reused by the drive's other parts.
@@ -243,6 +246,7 @@ impl Data {
             rotor_constant,
             rotor_frame: rotor_frames,
             plane_axis: model.bodies.iter().map(plane_axis).collect(),
+            unplaced: crate::kinematics::identity_placements(model),
             ankle_loop: None,
             knee_loop: None,
             mechanism_fault: None,

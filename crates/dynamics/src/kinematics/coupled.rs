@@ -6,7 +6,7 @@ use crate::mechanism::{Coupling, MechanismError, RelativeMotion, MAX_COUPLED};
 use crate::model::coupling::Mechanism;
 use crate::model::{Body, JointModel};
 use crate::spatial::{Motion, SpatialTransform};
-use crate::Data;
+use crate::{Data, Model};
 use nalgebra::DVector;
 
 /// Relative kinematics of a coupled part from its mechanism (see [`crate::mechanism`]): the
@@ -54,9 +54,14 @@ pub(super) fn coupled_kinematics(
             return (body.placement_x, Motion::zero(), Motion::zero());
         }
     };
-    // Pose `placement * (A_pk, r)`: `A_kp = A_pk^T A_placement^T`, origin shifted by the placement.
+    // Pose `placement * (A_pk, r)`: `A_kp = A_pk^T A_placement^T`, origin shifted by the placement
+    // (the identity for parts attached at the parent's frame, as all of Lola's).
     let pl = &body.placement_x;
-    let x = SpatialTransform::new(m.rot.tr_mul(&pl.rot), pl.trans + pl.rot.tr_mul(&m.pos));
+    let x = if data.unplaced[i] {
+        SpatialTransform::new(m.rot.transpose(), m.pos)
+    } else {
+        SpatialTransform::new(m.rot.tr_mul(&pl.rot), pl.trans + pl.rot.tr_mul(&m.pos))
+    };
     let mut rel = Motion::zero();
     for (c, (col, qd)) in m.jacobian.iter().zip(&qdin).take(n).enumerate() {
         data.jacobian6[i].set_column(c, col);
@@ -65,4 +70,97 @@ pub(super) fn coupled_kinematics(
     let mut cj = Motion::from_vector(&m.bias);
     cj.lin += rel.ang.cross(&rel.lin);
     (x, rel, cj)
+}
+
+/// Per body: whether its joint placement is the identity (`C` of the joint is the relative
+/// pose alone), for [`crate::Data`]'s `unplaced`.
+pub(crate) fn identity_placements(model: &Model) -> Vec<bool> {
+    let unplaced = |b: &Body| b.placement_x == SpatialTransform::identity();
+    model.bodies.iter().map(unplaced).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::mechanism::ankle::{AnkleDrive, AnkleDriveParams, AnklePart};
+    use crate::mechanism::knee::{KneeDrive, KneeDriveParams, KneePart};
+    use crate::model::coupling::Mechanism;
+    use crate::model::{BodySpec, JointModel, ModelBuilder};
+    use crate::spatial::RigidInertia;
+    use crate::{forward_kinematics, Data, Model};
+    use nalgebra::{DVector, Isometry3, Matrix3, Vector3};
+
+    /// Thigh, knee (y) with its three knee parts, ankle flexion (y) and adduction (x) with the
+    /// six slider-crank parts; every part attached at its parent's frame (identity placement).
+    fn leg() -> Model {
+        let knee = KneeDrive::new(KneeDriveParams::default()).expect("knee");
+        let ankle = AnkleDrive::new(AnkleDriveParams::default()).expect("ankle");
+        let inertia = RigidInertia::new(1.0, Vector3::new(0.1, 0.0, 0.0), Matrix3::identity())
+            .expect("valid inertia");
+        let mut b = ModelBuilder::new();
+        let mut add = |parent, joint, placement| {
+            let n = format!("b{parent:?}{placement:?}{joint:?}");
+            b.add_body(BodySpec {
+                name: n.clone(),
+                joint_name: n,
+                parent,
+                joint,
+                placement,
+                inertia,
+            })
+            .expect("body")
+        };
+        let shift = Isometry3::new(Vector3::new(0.1, -0.2, 0.3), Vector3::new(0.2, 0.1, -0.3));
+        let rev = |axis| JointModel::Revolute { axis };
+        let thigh = add(None, rev(Vector3::y_axis()), shift);
+        let shank = add(Some(thigh), rev(Vector3::y_axis()), shift);
+        for part in [KneePart::Housing, KneePart::Nut, KneePart::Rotor] {
+            let mechanism = Mechanism::Knee(knee.part(part));
+            let joint = JointModel::Coupled {
+                mechanism,
+                inputs: vec![shank],
+            };
+            add(Some(thigh), joint, Isometry3::identity());
+        }
+        let flx = add(Some(shank), rev(Vector3::y_axis()), shift);
+        let abd = add(Some(flx), rev(Vector3::x_axis()), shift);
+        for act in 0..2 {
+            for part in [AnklePart::Nut, AnklePart::Rotor, AnklePart::Rod] {
+                let mechanism = Mechanism::Ankle(ankle.part(act, part).expect("part"));
+                let joint = JointModel::Coupled {
+                    mechanism,
+                    inputs: vec![flx, abd],
+                };
+                add(Some(shank), joint, Isometry3::identity());
+            }
+        }
+        ModelBuilder::build(b).expect("model")
+    }
+
+    /// The identity-placement shortcut gives the same kinematics as the placement products
+    /// (`unplaced` forced off), for every body and output, at several states.
+    #[test]
+    fn unplaced_parts_equal_the_placement_products() {
+        let model = leg();
+        let mut fast = Data::new(&model);
+        let mut general = fast.clone();
+        assert_eq!(fast.unplaced.iter().filter(|&&u| u).count(), 9);
+        general.unplaced.fill(false);
+        let a = DVector::zeros(model.nv());
+        for (q, v) in [
+            ([0.3, 0.5, 0.1, -0.05], [0.7, -1.2, 0.4, 0.9]),
+            ([-0.4, 1.1, -0.2, 0.1], [-2.0, 0.3, -0.6, 1.5]),
+        ] {
+            let (q, v) = (DVector::from_row_slice(&q), DVector::from_row_slice(&v));
+            forward_kinematics(&model, &mut fast, &q, &v, &a).expect("fast");
+            forward_kinematics(&model, &mut general, &q, &v, &a).expect("general");
+            for i in 0..model.nbodies() {
+                assert_eq!(fast.x[i], general.x[i]);
+                assert_eq!(fast.world_rot[i], general.world_rot[i]);
+                assert_eq!(fast.world_pos[i], general.world_pos[i]);
+                assert_eq!(fast.vel[i], general.vel[i]);
+                assert_eq!(fast.bias_acc[i], general.bias_acc[i]);
+                assert_eq!(fast.acc[i], general.acc[i]);
+            }
+        }
+    }
 }

@@ -13,6 +13,7 @@ mod plane;
 mod rotor;
 mod step;
 
+pub(crate) use coupled::identity_placements;
 pub(crate) use joint::{add_projected_force, joint_column, relative_motion, six};
 pub(crate) use rotor::{rotor_frames, rotor_transform};
 pub(crate) use step::{body_force, body_kinematics, force_of};
