@@ -7,7 +7,6 @@ use crate::model::coupling::Mechanism;
 use crate::model::{Body, JointModel};
 use crate::spatial::{Motion, SpatialTransform};
 use crate::{Data, Model};
-use nalgebra::DVector;
 
 /// Relative kinematics of a coupled part from its mechanism (see [`crate::mechanism`]): the
 /// Jacobian columns go to `jacobian6[i]`; the joint bias adds `omega_rel x v_rel` to the
@@ -17,8 +16,8 @@ pub(super) fn coupled_kinematics(
     body: &Body,
     data: &mut Data,
     i: usize,
-    q: &DVector<f64>,
-    v: Option<&DVector<f64>>,
+    q: &[f64],
+    v: Option<&[f64]>,
 ) -> (SpatialTransform, Motion, Motion) {
     let JointModel::Coupled { mechanism, .. } = &body.joint_model else {
         return (body.placement_x, Motion::zero(), Motion::zero());

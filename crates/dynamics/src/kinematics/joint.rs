@@ -85,8 +85,8 @@ pub(super) fn joint_kinematics(
     model: &Model,
     data: &mut Data,
     i: usize,
-    q: &DVector<f64>,
-    v: Option<&DVector<f64>>,
+    q: &[f64],
+    v: Option<&[f64]>,
 ) -> (SpatialTransform, Motion, Motion) {
     let body = &model.bodies[i];
     let pl = &body.placement_x;
@@ -115,7 +115,7 @@ pub(super) fn joint_kinematics(
             let Some(v) = v else {
                 return (x, Motion::zero(), Motion::zero());
             };
-            let qd = six(v, vi);
+            let qd = Vector6::from_column_slice(&v[vi..vi + 6]);
             let rel = six_dof_motion(&data.jacobian6[i], &qd);
             let dr = Vector3::new(qd[3], qd[4], qd[5]);
             let cj = Motion::new(euler_zxz_jr_dot_qd(theta, psi, &dr), Vector3::zeros());

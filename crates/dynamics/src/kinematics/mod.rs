@@ -16,6 +16,7 @@ mod step;
 pub(crate) use coupled::identity_placements;
 pub(crate) use joint::{add_projected_force, joint_column, relative_motion, six};
 pub(crate) use rotor::{rotor_frames, rotor_transform};
+use step::body_step;
 pub(crate) use step::{body_force, body_kinematics, force_of};
 
 use crate::check;
@@ -38,8 +39,9 @@ pub fn forward_kinematics(
     check::configuration(model, q)?;
     check::vector("v", v, model.nv())?;
     check::vector("a", a, model.nv())?;
+    let (q, v) = (q.as_slice(), v.as_slice());
     for i in 0..model.nbodies() {
-        body_kinematics(model, data, i, q, Some(v));
+        body_step(model, data, i, q, Some(v));
     }
     take_fault(data)?;
     propagate_accelerations(model, data, Some(a));
@@ -55,7 +57,7 @@ pub fn update_placements(
     check::data(model, data)?;
     check::configuration(model, q)?;
     for i in 0..model.nbodies() {
-        body_kinematics(model, data, i, q, None);
+        body_step(model, data, i, q.as_slice(), None);
     }
     take_fault(data)
 }
@@ -92,8 +94,9 @@ pub(crate) fn first_forward(
     v: &DVector<f64>,
     fext: Option<&[Wrench]>,
 ) {
+    let (q, v) = (q.as_slice(), v.as_slice());
     for i in 0..model.nbodies() {
-        body_kinematics(model, data, i, q, Some(v));
+        body_step(model, data, i, q, Some(v));
         body_force(model, data, i, fext);
     }
 }
@@ -112,9 +115,10 @@ pub(crate) fn first_forward_kinematics(
     // were checked by the caller (`check::data`, `check::configuration`, `check::vector`).
     data.fd_q.as_mut_slice().copy_from_slice(q.as_slice());
     data.fd_v.as_mut_slice().copy_from_slice(v.as_slice());
+    let (q, v) = (q.as_slice(), v.as_slice());
     for i in 0..model.nbodies() {
         if data.rotor_constant[i].is_none() {
-            body_kinematics(model, data, i, q, Some(v));
+            body_step(model, data, i, q, Some(v));
         }
     }
 }
@@ -127,7 +131,7 @@ pub(crate) fn complete_rotor_kinematics(model: &Model, data: &mut Data) {
     );
     for i in 0..model.nbodies() {
         if data.rotor_constant[i].is_some() {
-            body_kinematics(model, data, i, &q, Some(&v));
+            body_step(model, data, i, q.as_slice(), Some(v.as_slice()));
         }
     }
     (data.fd_q, data.fd_v) = (q, v);

@@ -143,7 +143,7 @@ mod tests {
             for i in 0..model.nbodies() {
                 planes += usize::from(fast.plane_axis[i].is_some());
                 body_kinematics(&model, &mut fast, i, &q, Some(&v));
-                general_body_kinematics(&model, &mut general, i, &q, Some(&v));
+                general_body_kinematics(&model, &mut general, i, q.as_slice(), Some(v.as_slice()));
                 prop_assert_eq!(fast.x[i], general.x[i]);
                 prop_assert_eq!(fast.world_rot[i], general.world_rot[i]);
                 prop_assert_eq!(fast.world_pos[i], general.world_pos[i]);

@@ -8,7 +8,7 @@ use crate::model::coupling::Mechanism;
 use crate::model::{Body, JointModel};
 use crate::spatial::{sin_cos, Axis, Motion, SpatialTransform};
 use crate::{Data, Model};
-use nalgebra::{DVector, Isometry3, Translation3, Vector3};
+use nalgebra::{Isometry3, Translation3, Vector3};
 
 /// Harmonic Drive rotor (3.1)-(3.2) without evaluating the mechanism: the rotor turns by
 /// `N q + offset` about the z axis of the constant frame `data.rotor_frame[i]` (placement times
@@ -20,8 +20,8 @@ pub(super) fn rotor_kinematics(
     body: &Body,
     data: &mut Data,
     i: usize,
-    q: &DVector<f64>,
-    v: Option<&DVector<f64>>,
+    q: &[f64],
+    v: Option<&[f64]>,
 ) -> (SpatialTransform, Motion, Motion) {
     let Some(x) = rotor_transform(rotor, &data.rotor_frame[i], q[body.q_set.as_slice()[0]]) else {
         data.mechanism_fault = Some((
@@ -85,8 +85,8 @@ mod tests {
     use crate::mechanism::Coupling;
     use crate::model::{BodySpec, ModelBuilder};
     use crate::spatial::RigidInertia;
-    use nalgebra::Matrix3;
     use nalgebra::UnitQuaternion;
+    use nalgebra::{DVector, Matrix3};
 
     /// Base on a revolute joint carrying a link and its Harmonic Drive rotor.
     fn rotor_model() -> (Model, HarmonicDriveRotor) {

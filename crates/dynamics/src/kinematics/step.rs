@@ -10,8 +10,7 @@ use crate::{Data, Model};
 use nalgebra::{DVector, Vector3};
 
 /// One step of the first forward recursion for body `i`: `C_i`, world pose, `g_i`, `v_i`
-/// (2.33) and `b_i` (2.37); without `v` velocities and `b_i` are zero. Revolute joints about a
-/// coordinate axis of an unrotated placement take the written-out path of [`super::plane`].
+/// (2.33) and `b_i` (2.37); without `v` velocities and `b_i` are zero.
 #[inline]
 pub(crate) fn body_kinematics(
     model: &Model,
@@ -20,6 +19,14 @@ pub(crate) fn body_kinematics(
     q: &DVector<f64>,
     v: Option<&DVector<f64>>,
 ) {
+    body_step(model, data, i, q.as_slice(), v.map(|v| v.as_slice()));
+}
+
+/// [`body_kinematics`] on coordinate slices (taken once per pass by the callers). Revolute
+/// joints about a coordinate axis of an unrotated placement take the written-out path of
+/// [`super::plane`].
+#[inline]
+pub(crate) fn body_step(model: &Model, data: &mut Data, i: usize, q: &[f64], v: Option<&[f64]>) {
     let body = &model.bodies[i];
     if let (Some(k), Some(p), Some(v), Joint::Revolute(ax) | Joint::Rotor(ax)) =
         (data.plane_axis[i], body.parent, v, &body.joint)
@@ -37,14 +44,14 @@ pub(crate) fn body_kinematics(
     general_body_kinematics(model, data, i, q, v);
 }
 
-/// [`body_kinematics`] by the general joint kinematics and child step (every joint type).
+/// [`body_step`] by the general joint kinematics and child step (every joint type).
 #[inline]
 pub(crate) fn general_body_kinematics(
     model: &Model,
     data: &mut Data,
     i: usize,
-    q: &DVector<f64>,
-    v: Option<&DVector<f64>>,
+    q: &[f64],
+    v: Option<&[f64]>,
 ) {
     let (x, rel, cj) = joint_kinematics(model, data, i, q, v);
     match model.bodies[i].parent {
