@@ -1,7 +1,9 @@
 //! `stand` on Lola Type 2 with RK4 at the 1 kHz control period (issue item 9): wall time of
 //! 0.2 s simulated (real-time factor = 0.2 s / time), and the parts of one right-hand side:
-//! the whole rhs, the forward dynamics alone, contact + drives without dynamics, and the
-//! contact layer alone; the recorder's share: the same run with every signal recorded each
+//! the whole rhs (alternating two states, and at one state, where the kinematics pass of the
+//! previous call is reused as by RK4's first stage after the sensors' state pass), the state
+//! pass, the forward dynamics alone, contact + drives without dynamics, and the contact layer
+//! alone; the recorder's share: the same run with every signal recorded each
 //! cycle (as `biped simulate` does) and writing its CSV.
 
 use biped_dynamics::{forward_dynamics, Algorithm, Data, Wrench};
@@ -56,28 +58,55 @@ fn stand(c: &mut Criterion) {
 
     let (mut plant, sc) = setup();
     let z = sc.z0.clone();
+    let l = plant.layout();
+    // A second state (one joint speed moved) alternated with the first, so that no call finds
+    // the kinematics pass of the previous one at its (q, v) (which it would reuse).
+    let mut z2 = z.clone();
+    z2[l.v().start + 7] += 1e-6;
+    let states = [z.clone(), z2];
     let mut zdot = vec![0.0; z.len()];
     let mut g = c.benchmark_group("rhs_parts_lola_type2");
+    let mut k = 0;
     g.bench_function("plant rhs", |b| {
+        b.iter(|| {
+            k ^= 1;
+            plant.rhs(0.0, black_box(&states[k]), &mut zdot).unwrap()
+        })
+    });
+    g.bench_function("plant rhs, kinematics pass reused (RK4 stage 1)", |b| {
         b.iter(|| plant.rhs(0.0, black_box(&z), &mut zdot).unwrap())
     });
+    g.bench_function(
+        "state pass: kinematics + contact + drives (Plant::state_outputs)",
+        |b| {
+            b.iter(|| {
+                k ^= 1;
+                plant.state_outputs(black_box(&states[k])).unwrap();
+            })
+        },
+    );
     g.bench_function("contact + drives, no dynamics (Plant::outputs)", |b| {
         b.iter(|| {
             plant.outputs(black_box(&z)).unwrap();
         })
     });
-    let l = plant.layout();
-    let (q, v) = (
-        DVector::from_column_slice(&z[l.q()]),
-        DVector::from_column_slice(&z[l.v()]),
-    );
+    let qv = |z: &[f64]| {
+        (
+            DVector::from_column_slice(&z[l.q()]),
+            DVector::from_column_slice(&z[l.v()]),
+        )
+    };
+    let qvs = [qv(&states[0]), qv(&states[1])];
+    let (q, v) = qvs[0].clone();
     let model = plant.model().clone();
     let mut data = Data::new(&model);
     let tau = DVector::zeros(model.nv());
     let fext = vec![Wrench::zero(); model.nbodies()];
     g.bench_function("forward dynamics O(n)", |b| {
         b.iter(|| {
-            forward_dynamics(&model, &mut data, &q, &v, &tau, Some(&fext), Algorithm::On).unwrap();
+            k ^= 1;
+            let (q, v) = &qvs[k];
+            forward_dynamics(&model, &mut data, q, v, &tau, Some(&fext), Algorithm::On).unwrap();
         })
     });
     let contact: ContactSet = plant.contact().clone();
