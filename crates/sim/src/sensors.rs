@@ -9,6 +9,10 @@
 //! The IMU's linear acceleration is the specific force `A^T (a - g)` with `a` the mean
 //! acceleration of the base origin over the last control period (difference of velocities),
 //! which avoids an extra dynamics evaluation per period; at the first sample `a = 0`.
+//!
+//! A sample runs the plant's state pass ([`Plant::state_outputs`]): F/T and drive readings are
+//! those a right-hand side at that state computes, and the kinematics pass it leaves in the
+//! plant's workspace serves the recorder and the first integration stage of the period.
 
 use crate::drive::{DriveMode, Transmission};
 use crate::error::SimError;

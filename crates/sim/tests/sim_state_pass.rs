@@ -86,6 +86,9 @@ fn check(kind: LolaType, mode: DriveMode, seed: u64) -> usize {
     fresh.rhs(0.0, &z, &mut zref).unwrap();
     assert_eq!(zdot, zref, "{kind:?} {mode:?} seed {seed}");
     assert_same(p.last_outputs(), fresh.last_outputs());
+    // A second right-hand side at the state (after a solve on the reused pass) is the same.
+    p.rhs(0.0, &z, &mut zdot).unwrap();
+    assert_eq!(zdot, zref, "{kind:?} {mode:?} seed {seed}: repeated rhs");
     // The right-hand side reused the pass: a marker put between them survives.
     p.state_outputs(&z).unwrap();
     p.model_and_data().1.world_pos[0] = Vector3::repeat(MARK);

@@ -29,7 +29,8 @@ pub struct Frame<'a> {
     pub t: f64,
     /// State `z(t)`.
     pub z: &'a [f64],
-    /// The plant (layout, outputs of `z(t)`).
+    /// The plant (layout, outputs of `z(t)`; its workspace holds the forward-dynamics
+    /// kinematics pass at `z(t)` from the sensors' sample).
     pub plant: &'a Plant,
     /// Sensor sample at `t`.
     pub sensors: &'a Sensors,
