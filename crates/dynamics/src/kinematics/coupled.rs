@@ -39,7 +39,8 @@ pub(super) fn coupled_kinematics(
             .map(|m| RelativeMotion::from_coupled(&m)),
     };
     let fault = match motion {
-        Ok(m) if m.pos.iter().all(|x| x.is_finite()) => Ok(m),
+        // Non-short-circuit `&`: no branch per component.
+        Ok(m) if m.pos.x.is_finite() & m.pos.y.is_finite() & m.pos.z.is_finite() => Ok(m),
         Ok(_) => Err(MechanismError::BadInput {
             mechanism: "coupled part",
             reason: "non-finite pose".into(),
@@ -61,10 +62,12 @@ pub(super) fn coupled_kinematics(
     } else {
         SpatialTransform::new(m.rot.tr_mul(&pl.rot), pl.trans + pl.rot.tr_mul(&m.pos))
     };
+    let jacobian = &mut data.jacobian6[i];
     let mut rel = Motion::zero();
-    for (c, (col, qd)) in m.jacobian.iter().zip(&qdin).take(n).enumerate() {
-        data.jacobian6[i].set_column(c, col);
-        rel += Motion::from_vector(col) * *qd;
+    for c in 0..n.min(MAX_COUPLED) {
+        let col = &m.jacobian[c];
+        jacobian.set_column(c, col);
+        rel += Motion::from_vector(col) * qdin[c];
     }
     let mut cj = Motion::from_vector(&m.bias);
     cj.lin += rel.ang.cross(&rel.lin);
