@@ -64,6 +64,8 @@ pub(super) fn coupled_kinematics(
     };
     let jacobian = &mut data.jacobian6[i];
     let mut rel = Motion::zero();
+    // An indexed loop: cheaper here than the zip/take/enumerate chain (measured).
+    #[allow(clippy::needless_range_loop)]
     for c in 0..n.min(MAX_COUPLED) {
         let col = &m.jacobian[c];
         jacobian.set_column(c, col);
