@@ -11,15 +11,28 @@
 
 use super::on::add_rigid_congruence;
 use crate::model::joint::Joint;
-use crate::spatial::{ArticulatedInertia, Force, Motion};
+use crate::spatial::{plane, ArticulatedInertia, Force, JointAxis, Motion};
 use crate::{Data, DynamicsError, Model};
 use nalgebra::DVector;
+
+/// Most spin-invariant rotors one link-with-rotors sub-system holds (more: generic branch).
+const MAX_LINK_ROTORS: usize = 4;
 
 /// Constant data of a link-with-rotors sub-system (see the module doc).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct LinkRotors {
     /// The link body.
     pub(crate) link: usize,
+    /// The link's joint column `J`.
+    axis: JointAxis,
+    /// Velocity index of the sub-system's coordinate.
+    v_index: usize,
+    /// The sub-system's parent body.
+    parent: Option<usize>,
+    /// The rotor bodies and their parent-frame columns `s` (first `nrotors` entries).
+    rotors: [(usize, Motion); MAX_LINK_ROTORS],
+    /// Number of rotors.
+    nrotors: usize,
     /// `sum K` of the rotors (parent frame).
     pub(crate) congruence: ArticulatedInertia,
     /// `sum K s` of the rotors.
@@ -31,7 +44,8 @@ pub(crate) struct LinkRotors {
 }
 
 /// Per sub-system: its [`LinkRotors`] if it has one coordinate, exactly one member that is not
-/// a spin-invariant rotor, and that member is a revolute or prismatic link on the parent.
+/// a spin-invariant rotor, that member is a revolute or prismatic link on the parent, and it
+/// has at most [`MAX_LINK_ROTORS`] rotors.
 pub(crate) fn link_rotor_subsystems(
     model: &Model,
     rotor_constant: &[Option<super::rotor::RotorConstant>],
@@ -42,8 +56,11 @@ pub(crate) fn link_rotor_subsystems(
             return None;
         };
         let body = &model.bodies[link];
-        let plain = matches!(body.joint, Joint::Revolute(_) | Joint::Prismatic(_));
-        if s.v_set.len() != 1 || !plain || body.parent != s.parent {
+        let (Joint::Revolute(axis) | Joint::Prismatic(axis)) = body.joint else {
+            return None;
+        };
+        let rotors = s.members.iter().filter(|&&j| rotor_constant[j].is_some());
+        if s.v_set.len() != 1 || body.parent != s.parent || rotors.count() > MAX_LINK_ROTORS {
             return None;
         }
         let rigid = s
@@ -53,12 +70,22 @@ pub(crate) fn link_rotor_subsystems(
             .any(|(&j, &r)| j == link && r);
         let mut out = LinkRotors {
             link,
+            axis,
+            v_index: s.v_set[0],
+            parent: s.parent,
+            rotors: [(0, Motion::zero()); MAX_LINK_ROTORS],
+            nrotors: 0,
             rigid,
             congruence: ArticulatedInertia::zero(),
             ks: Force::zero(),
             sks: 0.0,
         };
-        for rc in s.members.iter().filter_map(|&j| rotor_constant[j].as_ref()) {
+        for &j in &s.members {
+            let Some(rc) = &rotor_constant[j] else {
+                continue;
+            };
+            out.rotors[out.nrotors] = (j, rc.s);
+            out.nrotors += 1;
             out.congruence += rc.congruence;
             out.ks += rc.ks;
             out.sks += rc.sks;
@@ -71,29 +98,22 @@ pub(crate) fn link_rotor_subsystems(
 /// Backward step (Algorithm 2.3) of link-with-rotors sub-system `s` (`data.link_rotors[s]` is
 /// set); stores `B_S` in `u[link]`, `D^-1` in `dinv[link]` and `p_S` in `p1[link]`.
 pub(crate) fn backward(
-    model: &Model,
     data: &mut Data,
     s: usize,
     tau: &DVector<f64>,
+    model: &Model,
 ) -> Result<(), DynamicsError> {
     let Some(lr) = &data.link_rotors[s] else {
         return Err(DynamicsError::Unsupported(
             "not a link-with-rotors sub-system",
         ));
     };
-    let (sub, link) = (&model.subsystems[s], lr.link);
-    let (Joint::Revolute(ax) | Joint::Prismatic(ax)) = &model.bodies[link].joint else {
-        return Err(DynamicsError::Unsupported(
-            "link sub-system without a one-DoF link",
-        ));
-    };
-    let vi = sub.v_set[0];
+    let (link, ax, vi) = (lr.link, &lr.axis, lr.v_index);
     let (mut rhs, mut h) = (tau[vi], Force::zero());
-    for &j in &sub.members {
-        if let Some(rc) = &data.rotor_constant[j] {
-            rhs -= rc.s.dot(&data.fbar[j]);
-            h += data.fbar[j];
-        }
+    for (j, sj) in &lr.rotors[..lr.nrotors] {
+        let hj = &data.fbar[*j];
+        rhs -= sj.dot(hj);
+        h += *hj;
     }
     let m = &data.mbar[link];
     let u = ax.apply_inertia(m);
@@ -108,10 +128,11 @@ pub(crate) fn backward(
     let x = &data.x[link];
     let b = x.tr_apply_force(&u) + lr.ks;
     let p = (rhs - ax.dot_force(&hat_f)) / d;
+    let dinv = 1.0 / d;
     data.u[link] = b;
-    data.dinv[link] = 1.0 / d;
+    data.dinv[link] = dinv;
     data.p1[link] = p;
-    let Some(parent) = sub.parent else {
+    let Some(parent) = lr.parent else {
         return Ok(());
     };
     let k = x.tr_apply_force(&hat_f) + h + b * p;
@@ -122,23 +143,21 @@ pub(crate) fn backward(
         (false, Some(axis)) => m.add_tr_transform_axis_to(axis, x, out),
         (false, None) => m.add_tr_transform_to(x, out),
     }
-    *out += lr.congruence;
-    out.sub_outer(&b, 1.0 / d);
+    out.add_sub_outer(&lr.congruence, &b, dinv);
     data.fbar[parent] -= k;
     Ok(())
 }
 
 /// Second forward step (Algorithm 2.4) of link-with-rotors sub-system `s`:
 /// `qddot = p_S - D^-1 B_S^T a_p` and the link's acceleration `C a_p + J qddot + b`.
-pub(crate) fn forward(model: &Model, data: &mut Data, s: usize) {
+pub(crate) fn forward(data: &mut Data, s: usize) {
     let Some(lr) = &data.link_rotors[s] else {
         return;
     };
-    let (sub, link) = (&model.subsystems[s], lr.link);
-    let ap = sub.parent.map_or(Motion::zero(), |p| data.acc[p]);
+    let link = lr.link;
+    let ap = lr.parent.map_or(Motion::zero(), |p| data.acc[p]);
     let qdd = data.p1[link] - data.dinv[link] * data.u[link].dot(&ap);
-    data.ddq[sub.v_set[0]] = qdd;
-    if let Joint::Revolute(ax) | Joint::Prismatic(ax) = &model.bodies[link].joint {
-        data.acc[link] = data.x[link].apply_motion(&ap) + ax.motion(qdd) + data.bias_acc[link];
-    }
+    data.ddq[lr.v_index] = qdd;
+    let cap = plane::apply_motion(&data.x[link], data.plane_axis[link], &ap);
+    data.acc[link] = cap + lr.axis.motion(qdd) + data.bias_acc[link];
 }

@@ -32,7 +32,7 @@ pub(super) fn backward_unchecked(
         match node.kind {
             NodeKind::Body(i) => body_backward(model, data, i, tau)?,
             NodeKind::Subsystem(s) if data.link_rotors[s].is_some() => {
-                subsystem::link::backward(model, data, s, tau)?
+                subsystem::link::backward(data, s, tau, model)?
             }
             NodeKind::Subsystem(s) => subsystem::on::backward(model, data, s, tau)?,
         }

@@ -13,7 +13,7 @@ pub fn forward_pass_2<'d>(model: &Model, data: &'d mut Data) -> &'d DVector<f64>
         match node.kind {
             NodeKind::Body(i) => body_forward(model, data, i),
             NodeKind::Subsystem(s) if data.link_rotors[s].is_some() => {
-                subsystem::link::forward(model, data, s)
+                subsystem::link::forward(data, s)
             }
             NodeKind::Subsystem(s) => subsystem::on::forward(model, data, s),
         }
