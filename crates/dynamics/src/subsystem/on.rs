@@ -10,13 +10,13 @@
 //! `P_S = -M_S^-1 B_S`, `p_S = M_S^-1 (Q_S - f_S)`,
 //! `K_S = sum C-hat^T M-hat C-hat - B_S^T M_S^-1 B_S`, `k_S = B_S^T p_S + sum C-hat^T (M-hat b-hat - f-hat)`.
 
+use super::chol::{cholesky, solve};
+pub(crate) use super::rigid::add_rigid_congruence;
 use super::MAX_SUBSYSTEM_DOF as MAX;
 use crate::kinematics::joint_column;
-use crate::spatial::{
-    skew, sym_congruence, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform,
-};
+use crate::spatial::{ArticulatedInertia, Force, Motion, SpatialTransform};
 use crate::{Data, DynamicsError, Model};
-use nalgebra::{DVector, Matrix3};
+use nalgebra::DVector;
 
 /// Calls `$f::<N>(args)` with `N` = the sub-system's DoF count for 1 and 2 (the Harmonic Drive
 /// rotors, knees and ankles: fully unrolled, no work on unused columns) and `N = MAX` otherwise.
@@ -198,33 +198,6 @@ fn backward_n<const N: usize>(
     Ok(())
 }
 
-/// `out += C^T M C` for a rigid-body inertia `M` (the `C-hat^T M-hat C-hat` term of (2.76) for
-/// a member without children outside, whose `M-hat_j` is still `M_j`): in parent axes the
-/// CoM is `c = A^T c_j + r`, and `C^T M C = [I_c' + m (|c|^2 E - c c^T), m c~; -m c~, m E]`.
-#[inline]
-pub(crate) fn add_rigid_congruence(
-    inertia: &RigidInertia,
-    x: &SpatialTransform,
-    out: &mut ArticulatedInertia,
-) {
-    let m = inertia.mass();
-    let c = x.rot.tr_mul(&inertia.com()) + x.trans;
-    let mut ang = sym_congruence(&inertia.inertia_about_com(), &x.rot);
-    let mc = c * m;
-    let diag = mc.dot(&c);
-    for i in 0..3 {
-        ang[(i, i)] += diag - mc[i] * c[i];
-        for k in i + 1..3 {
-            let o = mc[i] * c[k];
-            ang[(i, k)] -= o;
-            ang[(k, i)] -= o;
-        }
-    }
-    out.ang += ang;
-    out.cross += skew(&mc);
-    out.lin += Matrix3::from_diagonal_element(m);
-}
-
 /// Second forward step of sub-system `s` (Algorithm 2.4, (2.90)): `qddot_S = P_S a_p + p_S`
 /// into `ddq`, and accelerations of the members with children outside (`P_S`) only.
 pub(crate) fn forward(model: &Model, data: &mut Data, s: usize) {
@@ -254,70 +227,5 @@ fn forward_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
             a += *col * *q;
         }
         data.acc[j] = a;
-    }
-}
-
-/// In-place Cholesky `M_S = L L^T` of the leading `n x n` block (lower triangle used).
-#[inline]
-fn cholesky<const N: usize>(
-    m: &mut [[f64; N]; N],
-    n: usize,
-    v_set: &[usize],
-) -> Result<(), DynamicsError> {
-    for c in 0..n {
-        let scale = m[c][c].abs();
-        let d = m[c][c] - m[c][..c].iter().map(|x| x * x).sum::<f64>();
-        if d <= 1e-14 * scale.max(f64::MIN_POSITIVE) || !d.is_finite() {
-            return Err(DynamicsError::NotPositiveDefinite {
-                index: v_set[c],
-                pivot: d,
-            });
-        }
-        let l = d.sqrt();
-        m[c][c] = l;
-        for r in c + 1..n {
-            let dot: f64 = m[r][..c].iter().zip(&m[c][..c]).map(|(a, b)| a * b).sum();
-            m[r][c] = (m[r][c] - dot) / l;
-        }
-    }
-    Ok(())
-}
-
-/// Solves `L L^T x = b` in place for the leading `n x n` block of a factor of [`cholesky`]
-/// (stored in an `S x S` array; `b` holds at least `n` entries).
-#[inline]
-fn solve<const S: usize>(l: &[[f64; S]; S], n: usize, b: &mut [f64]) {
-    for c in 0..n {
-        for k in 0..c {
-            b[c] -= l[c][k] * b[k];
-        }
-        b[c] /= l[c][c];
-    }
-    for c in (0..n).rev() {
-        for k in c + 1..n {
-            b[c] -= l[k][c] * b[k];
-        }
-        b[c] /= l[c][c];
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use nalgebra::{Isometry3, Vector3};
-
-    /// The rigid-member congruence against the general articulated one, `C^T M C`.
-    #[test]
-    fn rigid_congruence_matches_the_articulated_transform() {
-        let ic = Matrix3::new(0.3, 0.01, -0.02, 0.01, 0.2, 0.03, -0.02, 0.03, 0.25);
-        let inertia = RigidInertia::new(2.5, Vector3::new(0.1, -0.2, 0.05), ic).expect("valid");
-        let pose = Isometry3::new(Vector3::new(0.3, -0.1, 0.7), Vector3::new(0.9, -0.4, 1.2));
-        let x = SpatialTransform::from_pose(&pose);
-        let mut fast = ArticulatedInertia::zero();
-        add_rigid_congruence(&inertia, &x, &mut fast);
-        let dense = x.to_matrix().transpose() * inertia.to_matrix() * x.to_matrix();
-        assert!((fast.to_matrix() - dense).amax() < 1e-12);
-        let general = inertia.to_articulated().tr_transform(&x);
-        assert!((fast.to_matrix() - general.to_matrix()).amax() < 1e-12);
     }
 }

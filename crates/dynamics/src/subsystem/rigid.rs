@@ -1,0 +1,112 @@
+//! Congruence `C^T M C` of a rigid member (the `C-hat^T M-hat C-hat` term of (2.76) for a
+//! member without children outside its sub-system, whose `M-hat_j` is still the rigid-body
+//! `M_j` of (2.22)), shared by the generic, link-with-rotors and rotor-constant steps.
+
+use crate::spatial::{skew, sym_congruence, ArticulatedInertia, RigidInertia, SpatialTransform};
+use nalgebra::{Matrix3, Vector3};
+
+/// `out += C^T M C` for a rigid-body inertia `M` (the `C-hat^T M-hat C-hat` term of (2.76) for
+/// a member without children outside, whose `M-hat_j` is still `M_j`): in parent axes the
+/// CoM is `c = A^T c_j + r`, and `C^T M C = [I_c' + m (|c|^2 E - c c^T), m c~; -m c~, m E]`
+/// with `I_c' = A^T I_c A`, formed by [`axisymmetric_inertia`] when it applies.
+#[inline]
+pub(crate) fn add_rigid_congruence(
+    inertia: &RigidInertia,
+    x: &SpatialTransform,
+    out: &mut ArticulatedInertia,
+) {
+    let m = inertia.mass();
+    let (c, ic) = (inertia.com(), inertia.inertia_about_com());
+    let (c, mut ang) = match axisymmetric_inertia(&c, &ic, &x.rot) {
+        Some((z, ang)) => (z * c.z + x.trans, ang),
+        None => (x.rot.tr_mul(&c) + x.trans, sym_congruence(&ic, &x.rot)),
+    };
+    let mc = c * m;
+    let diag = mc.dot(&c);
+    for i in 0..3 {
+        ang[(i, i)] += diag - mc[i] * c[i];
+        for k in i + 1..3 {
+            let o = mc[i] * c[k];
+            ang[(i, k)] -= o;
+            ang[(k, i)] -= o;
+        }
+    }
+    out.ang += ang;
+    out.cross += skew(&mc);
+    out.lin += Matrix3::from_diagonal_element(m);
+}
+
+/// For a body axisymmetric about its z axis (CoM `c_j` on the axis, `I_c = diag(a, a, b)`
+/// exactly, e.g. a cylinder- or square-box-shaped screw, nut, rod or rotor): the axis
+/// `z = A^T e_z` in parent coordinates and `A^T I_c A = a E + (b - a) z z^T` (12 instead of
+/// 75 flops). `None` for any other inertia.
+#[inline]
+fn axisymmetric_inertia(
+    c: &Vector3<f64>,
+    ic: &Matrix3<f64>,
+    rot: &Matrix3<f64>,
+) -> Option<(Vector3<f64>, Matrix3<f64>)> {
+    let off = [c.x, c.y, ic[(0, 1)], ic[(0, 2)], ic[(1, 2)]];
+    if off.iter().any(|&v| v != 0.0) || ic[(0, 0)] != ic[(1, 1)] {
+        return None;
+    }
+    let (a, z) = (ic[(0, 0)], rot.row(2).transpose());
+    let bz = z * (ic[(2, 2)] - a);
+    let e = |i: usize, j: usize| bz[i] * z[j];
+    let (m01, m02, m12) = (e(0, 1), e(0, 2), e(1, 2));
+    let ang = Matrix3::new(
+        a + e(0, 0),
+        m01,
+        m02,
+        m01,
+        a + e(1, 1),
+        m12,
+        m02,
+        m12,
+        a + e(2, 2),
+    );
+    Some((z, ang))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Isometry3, Vector3};
+
+    /// The rigid-member congruence against the general articulated one, `C^T M C`.
+    #[test]
+    fn rigid_congruence_matches_the_articulated_transform() {
+        let ic = Matrix3::new(0.3, 0.01, -0.02, 0.01, 0.2, 0.03, -0.02, 0.03, 0.25);
+        let inertia = RigidInertia::new(2.5, Vector3::new(0.1, -0.2, 0.05), ic).expect("valid");
+        let pose = Isometry3::new(Vector3::new(0.3, -0.1, 0.7), Vector3::new(0.9, -0.4, 1.2));
+        let x = SpatialTransform::from_pose(&pose);
+        let mut fast = ArticulatedInertia::zero();
+        add_rigid_congruence(&inertia, &x, &mut fast);
+        let dense = x.to_matrix().transpose() * inertia.to_matrix() * x.to_matrix();
+        assert!((fast.to_matrix() - dense).amax() < 1e-12);
+        let general = inertia.to_articulated().tr_transform(&x);
+        assert!((fast.to_matrix() - general.to_matrix()).amax() < 1e-12);
+        // Axisymmetric bodies (the short path) and near-axisymmetric ones (the general path),
+        // accumulated onto a nonzero inertia, against the dense congruence.
+        let diag = |a: f64, b: f64, c: f64| Matrix3::from_diagonal(&Vector3::new(a, b, c));
+        for (com, ic, short) in [
+            (Vector3::new(0.0, 0.0, 0.1), diag(0.3, 0.3, 0.05), true),
+            (Vector3::new(0.0, 0.0, -0.2), diag(0.2, 0.2, 0.2), true),
+            (Vector3::new(1e-9, 0.0, 0.1), diag(0.3, 0.3, 0.05), false),
+            (
+                Vector3::new(0.0, 0.0, 0.1),
+                diag(0.3, 0.3 + 1e-9, 0.05),
+                false,
+            ),
+        ] {
+            assert_eq!(axisymmetric_inertia(&com, &ic, &x.rot).is_some(), short);
+            let body = RigidInertia::new(1.5, com, ic).expect("valid");
+            let mut acc = general;
+            add_rigid_congruence(&body, &x, &mut acc);
+            let dense_body = x.to_matrix().transpose() * body.to_matrix() * x.to_matrix();
+            let expect = general.to_matrix() + dense_body;
+            assert!((acc.to_matrix() - expect).amax() < 1e-12 * expect.amax());
+            assert_eq!(acc.ang, acc.ang.transpose());
+        }
+    }
+}
