@@ -8,8 +8,8 @@
 use biped_dynamics::dill::{dill, dill_test_state};
 use biped_dynamics::urdf::{load_file, UrdfOptions};
 use biped_dynamics::{
-    forward_dynamics, forward_dynamics_kinematics, forward_dynamics_solve, on, Algorithm, Data,
-    Model,
+    forward_dynamics, forward_dynamics_kinematics, forward_dynamics_solve, nearby_state, on,
+    Algorithm, Data, Model,
 };
 use criterion::{criterion_group, criterion_main, BenchmarkGroup, BenchmarkId, Criterion};
 use nalgebra::DVector;
@@ -31,6 +31,15 @@ struct Case {
     q: DVector<f64>,
     v: DVector<f64>,
     tau: DVector<f64>,
+}
+
+impl Case {
+    /// The state and a [`nearby_state`]: timing loops alternate them so that every call does
+    /// the whole work (a repeated `(q, v)` reuses the forward-dynamics kinematics).
+    fn states(&self) -> [(DVector<f64>, DVector<f64>); 2] {
+        let near = nearby_state(&self.model, &self.q, &self.v).expect("valid state");
+        [(self.q.clone(), self.v.clone()), near]
+    }
 }
 
 /// Dill(n) at the thesis' test state with zero joint torques.
@@ -84,41 +93,43 @@ fn humanoid_case() -> Case {
     }
 }
 
-/// Benchmarks every algorithm on `case`.
+/// Benchmarks every algorithm on `case` (alternating its two states).
 fn bench_algorithms(group: &mut BenchmarkGroup<'_, criterion::measurement::WallTime>, case: &Case) {
-    let mut data = Data::new(&case.model);
+    let (m, tau, states) = (&case.model, &case.tau, case.states());
+    let mut data = Data::new(m);
+    let mut k = 0;
     for (name, algo) in ALGORITHMS {
         group.bench_function(BenchmarkId::new(name, &case.name), |b| {
             b.iter(|| {
-                black_box(
-                    forward_dynamics(
-                        &case.model,
-                        &mut data,
-                        &case.q,
-                        &case.v,
-                        &case.tau,
-                        None,
-                        algo,
-                    )
-                    .is_ok(),
-                )
+                k ^= 1;
+                let (q, v) = &states[k];
+                black_box(forward_dynamics(m, &mut data, q, v, tau, None, algo).is_ok())
             })
         });
     }
 }
 
-/// Benchmarks the O(n) passes on `case`: `fw1`, `fw1_bw` (the backward pass accumulates into
-/// the articulated inertias the first pass resets, so BW = fw1_bw - fw1), `fw2` (read-only),
-/// and the two phases `fd_kinematics` / `fd_solve` of the split forward dynamics.
+/// Benchmarks the O(n) passes on `case` (alternating its two states): `fw1`, `fw1_bw` (the
+/// backward pass accumulates into the articulated inertias the first pass resets, so
+/// BW = fw1_bw - fw1), `fw2` (read-only), and the two phases `fd_kinematics` / `fd_solve` of
+/// the split forward dynamics.
 fn bench_passes(group: &mut BenchmarkGroup<'_, criterion::measurement::WallTime>, case: &Case) {
     let (m, q, v, tau) = (&case.model, &case.q, &case.v, &case.tau);
+    let states = case.states();
     let mut data = Data::new(m);
+    let mut k = 0;
     forward_dynamics(m, &mut data, q, v, tau, None, Algorithm::On).expect("valid state");
     group.bench_function(BenchmarkId::new("fw1", &case.name), |b| {
-        b.iter(|| black_box(on::forward_pass_1(m, &mut data, q, v, None).is_ok()))
+        b.iter(|| {
+            k ^= 1;
+            let (q, v) = &states[k];
+            black_box(on::forward_pass_1(m, &mut data, q, v, None).is_ok())
+        })
     });
     group.bench_function(BenchmarkId::new("fw1_bw", &case.name), |b| {
         b.iter(|| {
+            k ^= 1;
+            let (q, v) = &states[k];
             black_box(on::forward_pass_1(m, &mut data, q, v, None).is_ok());
             black_box(on::backward_pass(m, &mut data, tau).is_ok())
         })
@@ -128,7 +139,11 @@ fn bench_passes(group: &mut BenchmarkGroup<'_, criterion::measurement::WallTime>
     });
     // The two-phase API: kinematics alone, and the solve repeated on fixed kinematics.
     group.bench_function(BenchmarkId::new("fd_kinematics", &case.name), |b| {
-        b.iter(|| black_box(forward_dynamics_kinematics(m, &mut data, q, v).is_ok()))
+        b.iter(|| {
+            k ^= 1;
+            let (q, v) = &states[k];
+            black_box(forward_dynamics_kinematics(m, &mut data, q, v).is_ok())
+        })
     });
     forward_dynamics_kinematics(m, &mut data, q, v).expect("valid state");
     group.bench_function(BenchmarkId::new("fd_solve", &case.name), |b| {

@@ -45,6 +45,19 @@ pub fn integrate(
     Ok(out)
 }
 
+/// A second state near `(q, v)` for timing loops: `q (+) 1e-3` along every coordinate and
+/// `v + 1e-3`. Alternating the two makes each forward-dynamics call a fresh pass (a repeated
+/// bitwise-equal `(q, v)` reuses the kinematics, see [`crate::forward_dynamics_kinematics`]).
+pub fn nearby_state(
+    model: &Model,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+) -> Result<(DVector<f64>, DVector<f64>), DynamicsError> {
+    check::vector("v", v, model.nv())?;
+    let step = DVector::from_element(model.nv(), 1.0);
+    Ok((integrate(model, q, &step, 1e-3)?, v.add_scalar(1e-3)))
+}
+
 /// `v` with `integrate(q0, v, 1) = q1` (the group logarithm for quaternion free joints).
 pub fn difference(
     model: &Model,

@@ -23,7 +23,7 @@ pub mod urdf;
 
 pub use centroidal::{center_of_mass, CenterOfMass, Centroidal};
 pub use centroidal::{centroidal_momentum, centroidal_momentum_current, CentroidalMomentum};
-pub use configuration::{difference, integrate};
+pub use configuration::{difference, integrate, nearby_state};
 pub use data::Data;
 pub use dynamics::{
     forward_dynamics, forward_dynamics_kinematics, forward_dynamics_solve, inverse_dynamics,

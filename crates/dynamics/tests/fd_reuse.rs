@@ -13,7 +13,7 @@ use biped_dynamics::dynamics::forward_dynamics_kinematics_current as current;
 use biped_dynamics::{
     center_of_mass, centroidal_momentum, centroidal_momentum_current, forward_dynamics,
     forward_dynamics_kinematics, forward_dynamics_solve, forward_kinematics, inverse_dynamics,
-    mass_matrix, update_placements, Algorithm, Data, DynamicsError, Model,
+    mass_matrix, nearby_state, update_placements, Algorithm, Data, DynamicsError, Model,
 };
 use loop_support::*;
 use nalgebra::{DVector, Vector3};
@@ -206,4 +206,23 @@ fn bad_inputs_are_still_rejected_and_keep_the_pass() {
     forward_dynamics_kinematics(&model, &mut data, &q, &v).unwrap();
     let got = forward_dynamics_solve(&model, &mut data, &tau, None, Algorithm::On).unwrap();
     assert!(same(got, &fresh(&model, &q, &v, &tau, Algorithm::On)));
+}
+
+#[test]
+fn nearby_state_forces_a_new_pass_even_at_rest() {
+    for (seed, model) in models() {
+        let (q, v, _) = state(&model, seed);
+        for v in [v.clone(), DVector::zeros(model.nv())] {
+            let (q2, v2) = nearby_state(&model, &q, &v).unwrap();
+            let mut data = Data::new(&model);
+            forward_dynamics_kinematics(&model, &mut data, &q, &v).unwrap();
+            assert!(!current(&data, q2.as_slice(), v2.as_slice()));
+            poison(&mut data);
+            forward_dynamics_kinematics(&model, &mut data, &q2, &v2).unwrap();
+            assert!(
+                recomputed(&model, &data),
+                "seed {seed}: the nearby state reused the pass"
+            );
+        }
+    }
 }

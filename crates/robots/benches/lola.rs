@@ -1,6 +1,7 @@
 //! Criterion benchmarks of forward dynamics on the Lola-like models Type 2 and Type 3 (thesis
 //! 2.10.2, Table 2.6 / Fig. 2.21): O(n) with sub-systems, CRBA + Cholesky, CRBA + sparse
-//! `L^T L`, and the three O(n) passes, at one reproducible random state inside the joint ranges;
+//! `L^T L`, and the three O(n) passes, alternating two reproducible random states inside the joint ranges (a repeated state would
+//! reuse the forward-dynamics kinematics);
 //! plus the inverse-kinematics path: forward kinematics, world Jacobian columns and the
 //! centroidal momentum matrix `A_G`.
 
@@ -28,6 +29,11 @@ fn bench_lola(c: &mut Criterion) {
         let m = &lm.model;
         let mut rng = rand::rngs::StdRng::seed_from_u64(1);
         let (q, v) = lm.random_state(&mut |a, b| rng.random_range(a..b));
+        let states = [
+            (q.clone(), v.clone()),
+            lm.random_state(&mut |a, b| rng.random_range(a..b)),
+        ];
+        let mut k = 0;
         let tau = DVector::from_fn(m.nv(), |_, _| rng.random_range(-1.0..1.0));
         let mut data = Data::new(m);
         let mut group = c.benchmark_group(format!("lola_{name}"));
@@ -35,16 +41,24 @@ fn bench_lola(c: &mut Criterion) {
         for (algo_name, algo) in ALGORITHMS {
             group.bench_function(algo_name, |b| {
                 b.iter(|| {
-                    black_box(forward_dynamics(m, &mut data, &q, &v, &tau, None, algo).is_ok())
+                    k ^= 1;
+                    let (q, v) = &states[k];
+                    black_box(forward_dynamics(m, &mut data, q, v, &tau, None, algo).is_ok())
                 })
             });
         }
         group.bench_function("on_fw1", |b| {
-            b.iter(|| black_box(on::forward_pass_1(m, &mut data, &q, &v, None).is_ok()))
+            b.iter(|| {
+                k ^= 1;
+                let (q, v) = &states[k];
+                black_box(on::forward_pass_1(m, &mut data, q, v, None).is_ok())
+            })
         });
         group.bench_function("on_fw1_bw", |b| {
             b.iter(|| {
-                black_box(on::forward_pass_1(m, &mut data, &q, &v, None).is_ok());
+                k ^= 1;
+                let (q, v) = &states[k];
+                black_box(on::forward_pass_1(m, &mut data, q, v, None).is_ok());
                 black_box(on::backward_pass(m, &mut data, &tau).is_ok())
             })
         });

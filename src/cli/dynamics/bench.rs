@@ -4,7 +4,7 @@
 use super::source::{Loaded, ModelSource};
 use super::CliResult;
 use biped_dynamics::dill::{dill, dill_test_state};
-use biped_dynamics::{forward_dynamics, on, Algorithm, Data, Model};
+use biped_dynamics::{forward_dynamics, nearby_state, on, Algorithm, Data, Model};
 use biped_robots::lola::{self, LolaType};
 use nalgebra::DVector;
 use rand::{Rng, SeedableRng};
@@ -105,17 +105,23 @@ pub fn random_state(model: &Model, seed: u64) -> (DVector<f64>, DVector<f64>, DV
     (q, v, tau)
 }
 
-/// Times every algorithm and O(n) pass on one model at one state.
+/// Times every algorithm and O(n) pass on one model, alternating between the state and a
+/// [`nearby_state`] so that every call does the whole work (a repeated state would reuse the
+/// forward-dynamics kinematics).
 pub fn time_model(
     model: &Model,
     q: &DVector<f64>,
     v: &DVector<f64>,
     tau: &DVector<f64>,
 ) -> Result<Timings, Box<dyn std::error::Error>> {
+    let states = two_states(model, q, v)?;
     let mut data = Data::new(model);
     let mut algo = |a: Algorithm| -> Result<f64, Box<dyn std::error::Error>> {
         forward_dynamics(model, &mut data, q, v, tau, None, a)?;
+        let mut k = 0;
         Ok(median_ns(|| {
+            k ^= 1;
+            let (q, v) = &states[k];
             black_box(forward_dynamics(model, &mut data, q, v, tau, None, a).is_ok());
         }))
     };
@@ -124,7 +130,7 @@ pub fn time_model(
         algo(Algorithm::Crba)?,
         algo(Algorithm::Sparse)?,
     );
-    let (fw1, bw, fw2) = time_passes(model, q, v, tau)?;
+    let (fw1, bw, fw2) = time_passes(model, &states, tau)?;
     Ok(Timings {
         n: None,
         nv: model.nv(),
@@ -139,17 +145,29 @@ pub fn time_model(
     })
 }
 
-/// Times the three passes of the O(n) algorithm separately. The backward pass accumulates into
-/// the articulated inertias that the first pass resets, so it is timed as the difference of
-/// `FW1 + BW` and `FW1` in alternating batches; the second forward pass only reads the backward
-/// results and is timed alone.
-fn time_passes(
+/// Two `(q, v)` states that timing loops alternate between.
+type States = [(DVector<f64>, DVector<f64>); 2];
+
+/// `(q, v)` and a [`nearby_state`] to alternate between in timing loops.
+fn two_states(
     model: &Model,
     q: &DVector<f64>,
     v: &DVector<f64>,
+) -> Result<States, Box<dyn std::error::Error>> {
+    Ok([(q.clone(), v.clone()), nearby_state(model, q, v)?])
+}
+
+/// Times the three passes of the O(n) algorithm separately (alternating `states`). The
+/// backward pass accumulates into the articulated inertias that the first pass resets, so it
+/// is timed as the difference of `FW1 + BW` and `FW1` in alternating batches; the second
+/// forward pass only reads the backward results and is timed alone.
+fn time_passes(
+    model: &Model,
+    states: &States,
     tau: &DVector<f64>,
 ) -> Result<(f64, f64, f64), Box<dyn std::error::Error>> {
     let data = std::cell::RefCell::new(Data::new(model));
+    let (q, v) = &states[0];
     forward_dynamics(
         model,
         &mut data.borrow_mut(),
@@ -159,8 +177,11 @@ fn time_passes(
         None,
         Algorithm::On,
     )?;
+    let mut k = 0;
     let (fw1, bw) = median_pair_ns(
         &mut || {
+            k ^= 1;
+            let (q, v) = &states[k];
             black_box(on::forward_pass_1(model, &mut data.borrow_mut(), q, v, None).is_ok());
         },
         &mut || {
