@@ -24,14 +24,15 @@ pub(crate) fn body_kinematics(
 
 /// [`body_kinematics`] on coordinate slices (taken once per pass by the callers). Revolute
 /// joints about a coordinate axis of an unrotated placement take the written-out path of
-/// [`super::plane`].
-#[inline]
+/// [`super::plane`] (inlined into the passes; `p < i`, true for every model, lets the
+/// compiler drop bounds checks on the parent's entries).
+#[inline(always)]
 pub(crate) fn body_step(model: &Model, data: &mut Data, i: usize, q: &[f64], v: Option<&[f64]>) {
     let body = &model.bodies[i];
     if let (Some(k), Some(p), Some(v), Joint::Revolute(ax) | Joint::Rotor(ax)) =
         (data.plane_axis[i], body.parent, v, &body.joint)
     {
-        if ax.kind == SubspaceKind::Angular {
+        if ax.kind == SubspaceKind::Angular && p < i {
             let (qi, qd) = (q[body.q_index], v[body.v_index]);
             match k {
                 0 => plane_revolute_step::<0>(model, data, i, p, ax, qi, qd),
