@@ -25,10 +25,38 @@ pub(crate) fn vector(
     if w.len() != expected {
         return Err(mismatch(argument, expected, w.len()));
     }
-    match w.iter().position(|x| !x.is_finite()) {
-        Some(index) => Err(DynamicsError::NonFinite { argument, index }),
-        None => Ok(()),
+    if !any_non_finite(w.as_slice()) {
+        return Ok(());
     }
+    let index = w.iter().position(|x| !x.is_finite()).unwrap_or(0);
+    Err(DynamicsError::NonFinite { argument, index })
+}
+
+/// Exponent bits of an `f64`: all set exactly for infinities and NaNs.
+const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+
+/// 1 if `x` is infinite or NaN, else 0 (branch-free, so scans of it vectorise).
+#[inline(always)]
+fn non_finite_bit(x: f64) -> u64 {
+    u64::from(x.to_bits() & EXPONENT == EXPONENT)
+}
+
+/// True if any entry is infinite or NaN: one branch-free OR-fold (the index of the first bad
+/// entry is searched only when there is one).
+#[inline]
+pub(crate) fn any_non_finite(xs: &[f64]) -> bool {
+    xs.iter().fold(0, |acc, &x| acc | non_finite_bit(x)) != 0
+}
+
+/// [`any_non_finite`] over the six components of each wrench.
+#[inline]
+fn any_non_finite_wrench(fs: &[Wrench]) -> bool {
+    let bits = |v: &nalgebra::Vector3<f64>| {
+        non_finite_bit(v.x) | non_finite_bit(v.y) | non_finite_bit(v.z)
+    };
+    fs.iter()
+        .fold(0, |acc, f| acc | bits(&f.ang) | bits(&f.lin))
+        != 0
 }
 
 /// Length and finiteness of `q`, and non-zero free-joint quaternions.
@@ -53,13 +81,14 @@ pub(crate) fn wrenches(model: &Model, fext: Option<&[Wrench]>) -> Result<(), Dyn
     if fext.len() != model.nbodies() {
         return Err(mismatch("fext", model.nbodies(), fext.len()));
     }
-    match fext.iter().position(|f| !f.is_finite()) {
-        Some(index) => Err(DynamicsError::NonFinite {
-            argument: "fext",
-            index,
-        }),
-        None => Ok(()),
+    if !any_non_finite_wrench(fext) {
+        return Ok(());
     }
+    let index = fext.iter().position(|f| !f.is_finite()).unwrap_or(0);
+    Err(DynamicsError::NonFinite {
+        argument: "fext",
+        index,
+    })
 }
 
 /// A dimension-mismatch error.
@@ -68,5 +97,34 @@ fn mismatch(argument: &'static str, expected: usize, got: usize) -> DynamicsErro
         argument,
         expected,
         got,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The bit scans agree with `f64::is_finite` for every position of a bad entry.
+        #[test]
+        fn bit_scans_match_is_finite(
+            xs in prop::collection::vec(-1e300f64..1e300, 0..40),
+            at in 0usize..40,
+            bad in prop::sample::select(vec![f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1.0]),
+        ) {
+            let mut xs = xs;
+            if at < xs.len() {
+                xs[at] = bad;
+            }
+            let expect = xs.iter().any(|x| !x.is_finite());
+            prop_assert_eq!(any_non_finite(&xs), expect);
+            let fs: Vec<Wrench> = xs
+                .chunks_exact(6)
+                .map(|c| Wrench::from_vector(&nalgebra::Vector6::from_column_slice(c)))
+                .collect();
+            let expect = fs.iter().any(|f| !f.is_finite());
+            prop_assert_eq!(any_non_finite_wrench(&fs), expect);
+        }
     }
 }
