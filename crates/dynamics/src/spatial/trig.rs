@@ -21,12 +21,16 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     let k = (x * std::f64::consts::FRAC_2_PI).round();
     let r = ((x - k * PIO2_HI) - k * PIO2_MID) - k * PIO2_LO;
     let (s, c) = kernel(r);
-    match (k as i64) & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    }
+    // Quadrant 0: (s, c), 1: (c, -s), 2: (-s, -c), 3: (-c, s), by selects and sign-bit flips
+    // (bit-identical to negation) instead of a jump table.
+    let quadrant = k as i64 as u64;
+    let (a, b) = if quadrant & 1 == 0 { (s, c) } else { (c, s) };
+    let sin_sign = (quadrant & 2) << 62;
+    let cos_sign = (quadrant.wrapping_add(1) & 2) << 62;
+    (
+        f64::from_bits(a.to_bits() ^ sin_sign),
+        f64::from_bits(b.to_bits() ^ cos_sign),
+    )
 }
 
 /// Taylor kernels of sine and cosine for `|r| <= pi/4` (Horner in `r^2`).
