@@ -27,14 +27,7 @@ pub(super) fn six_dof_backward(
         let d = j.tr_mul(&u);
         (u, d)
     };
-    let chol = d.cholesky().ok_or(DynamicsError::NotPositiveDefinite {
-        index: vi,
-        pivot: d.determinant(),
-    })?;
-    let l = chol.l_dirty();
-    for c in 0..6 {
-        check_pivot(vi + c, l[(c, c)] * l[(c, c)], d[(c, c)])?;
-    }
+    let l = cholesky6(&d, vi)?;
     let hat_f = data.mbar[i].apply(&data.bias_acc[i]) - data.fbar[i];
     let jt_hat = if free {
         free_tr_mul(&hat_f)
@@ -42,19 +35,64 @@ pub(super) fn six_dof_backward(
         j.tr_mul(&hat_f.to_vector())
     };
     let rhs = six(tau, vi) - jt_hat;
-    let p = chol.solve(&rhs);
+    let p = cholesky6_solve(&l, rhs);
     data.p6[i] = p;
     if !propagate {
         data.pi6[i] = Matrix6::zeros();
         return Ok(Force::zero());
     }
-    let pi = chol.solve(&u.transpose());
+    let mut pi = u.transpose();
+    for c in 0..6 {
+        let x = cholesky6_solve(&l, pi.column(c).into_owned());
+        pi.set_column(c, &x);
+    }
     let (b, fbar) = (data.bias_acc[i].to_vector(), data.fbar[i].to_vector());
     let k = mbar * (b + j * p) - fbar;
     let ia: Matrix6<f64> = mbar - u * pi;
     data.pi6[i] = pi;
     data.mbar[i] = ArticulatedInertia::from_matrix(&((ia + ia.transpose()) * 0.5));
     Ok(Force::from_vector(&k))
+}
+
+/// Lower Cholesky factor `L` of the joint-space inertia `D = L L^T` (2.67), every pivot
+/// checked against its diagonal entry ([`check_pivot`], index `vi + c`): fixed 6x6 loops,
+/// no generic factorisation object.
+fn cholesky6(d: &Matrix6<f64>, vi: usize) -> Result<Matrix6<f64>, DynamicsError> {
+    let mut l = Matrix6::zeros();
+    for j in 0..6 {
+        let mut pivot = d[(j, j)];
+        for k in 0..j {
+            pivot -= l[(j, k)] * l[(j, k)];
+        }
+        check_pivot(vi + j, pivot, d[(j, j)])?;
+        let ljj = pivot.sqrt();
+        l[(j, j)] = ljj;
+        for i in j + 1..6 {
+            let mut s = d[(i, j)];
+            for k in 0..j {
+                s -= l[(i, k)] * l[(j, k)];
+            }
+            l[(i, j)] = s / ljj;
+        }
+    }
+    Ok(l)
+}
+
+/// `D^-1 b` from the factor of [`cholesky6`]: `L y = b`, then `L^T x = y`.
+fn cholesky6_solve(l: &Matrix6<f64>, mut b: Vector6<f64>) -> Vector6<f64> {
+    for i in 0..6 {
+        for k in 0..i {
+            b[i] -= l[(i, k)] * b[k];
+        }
+        b[i] /= l[(i, i)];
+    }
+    for i in (0..6).rev() {
+        for k in i + 1..6 {
+            b[i] -= l[(k, i)] * b[k];
+        }
+        b[i] /= l[(i, i)];
+    }
+    b
 }
 
 /// `U = M-bar J` and `D = J^T M-bar J` for the free joint's constant `J = [0 E; E 0]`
@@ -102,6 +140,27 @@ pub(super) fn six_dof_forward(
 mod tests {
     use super::*;
     use crate::model::joint::quaternion_jacobian;
+
+    /// The fixed 6x6 Cholesky against nalgebra's factorisation and solve, and its pivot
+    /// check on a singular matrix.
+    #[test]
+    fn cholesky6_matches_nalgebra() {
+        let a = Matrix6::from_fn(|i, j| ((2 * i + 5 * j) % 7) as f64 * 0.4 - 1.1);
+        let d = a * a.transpose() + Matrix6::identity() * 0.3;
+        let l = cholesky6(&d, 0).expect("positive definite");
+        assert!((l * l.transpose() - d).amax() < 1e-13 * d.amax());
+        let b = Vector6::new(0.3, -1.2, 0.7, 2.1, -0.4, 0.05);
+        let expect = d.cholesky().expect("spd").solve(&b);
+        assert!((cholesky6_solve(&l, b) - expect).amax() < 1e-12 * expect.amax());
+        let mut singular = d;
+        singular.set_row(4, &d.row(1));
+        singular.set_column(4, &d.column(1));
+        singular[(4, 4)] = d[(1, 1)];
+        assert!(matches!(
+            cholesky6(&singular, 10),
+            Err(DynamicsError::NotPositiveDefinite { index: 14, .. })
+        ));
+    }
 
     /// The free joint's block permutations against the dense products `M J`, `J^T M J`.
     #[test]
