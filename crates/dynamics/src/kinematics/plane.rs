@@ -64,6 +64,23 @@ pub(super) fn plane_revolute_step<const K: usize>(
     data.x[i] = SpatialTransform::new(rot, trans);
 }
 
+/// `C_i`, world pose, `g_i`, `v_i` (2.33) and `b_i` (2.37) of a fixed-joint body `i` whose
+/// placement is a pure translation (`A_kp = 1`): the general step with the identity products
+/// dropped, `v_i = [w_p; v_p + w_p x r]`, `b_i = [0; w_p x (w_p x r)]`.
+#[inline(always)]
+pub(super) fn translation_step(model: &Model, data: &mut Data, i: usize, p: usize) {
+    let pl = model.bodies[i].placement_x;
+    let wp = data.world_rot[p];
+    data.world_pos[i] = data.world_pos[p] + wp * pl.trans;
+    data.world_rot[i] = wp;
+    data.gravity_body[i] = data.gravity_body[p];
+    let vp = data.vel[p];
+    let wr = vp.ang.cross(&pl.trans);
+    data.vel[i] = Motion::new(vp.ang, vp.lin + wr);
+    data.bias_acc[i] = Motion::new(Vector3::zeros(), vp.ang.cross(&wr));
+    data.x[i] = pl;
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::step::{body_kinematics, general_body_kinematics};
@@ -75,7 +92,7 @@ mod tests {
     use rand::{Rng, SeedableRng};
 
     /// Random tree: revolute joints about coordinate axes (most placements translations only,
-    /// some rotated) and leaf geared rotors about coordinate axes, each beside its driver (on
+    /// some rotated), leaf fixed frames and leaf geared rotors about coordinate axes, each beside its driver (on
     /// the driver's parent, like a Harmonic Drive rotor).
     fn plane_tree(seed: u64) -> Model {
         let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
@@ -93,7 +110,10 @@ mod tests {
                 UnitQuaternion::identity()
             };
             let axis = axes[rng.random_range(0..3)];
-            let (joint, parent) = if i > 1 && rng.random_range(0..3) == 0 {
+            let (joint, parent) = if i > 1 && rng.random_range(0..5) == 0 {
+                let parent = revolute[rng.random_range(0..revolute.len())].0;
+                (JointModel::Fixed, Some(parent))
+            } else if i > 1 && rng.random_range(0..3) == 0 {
                 let (driver, parent) = revolute[rng.random_range(1..revolute.len())];
                 let ratio = rng.random_range(-100.0..100.0);
                 (
@@ -108,7 +128,7 @@ mod tests {
                 let parent = (i > 0).then(|| revolute[rng.random_range(0..revolute.len())].0);
                 (JointModel::Revolute { axis }, parent)
             };
-            let geared = matches!(joint, JointModel::GearedRotor { .. });
+            let geared = matches!(joint, JointModel::GearedRotor { .. } | JointModel::Fixed);
             let id = b
                 .add_body(BodySpec {
                     name: format!("b{i}"),
@@ -126,9 +146,21 @@ mod tests {
         b.build().expect("model")
     }
 
+    /// The test trees hold both kinds of fast-path bodies (so the proptest exercises them).
+    #[test]
+    fn plane_trees_have_fixed_translation_frames() {
+        use crate::model::joint::Joint;
+        let fixed = (0..64)
+            .map(plane_tree)
+            .flat_map(|m| m.bodies.into_iter())
+            .filter(|b| matches!(b.joint, Joint::Fixed) && b.placement_x.rot == Matrix3::identity())
+            .count();
+        assert!(fixed > 10, "{fixed}");
+    }
+
     proptest! {
-        /// The written-out plane step equals the general step (values equal, zeros up to sign)
-        /// for every body and output, at random states of random plane trees.
+        /// The written-out plane and translation steps equal the general step (values equal,
+        /// zeros up to sign) for every body and output, at random states of random plane trees.
         #[test]
         fn plane_step_equals_general_step(
             seed in 0u64..64,

@@ -2,12 +2,12 @@
 //! (2.33) and `b_i` (2.37) from the parent's, and the body force `f_i` (2.56).
 
 use super::joint::joint_kinematics;
-use super::plane::plane_revolute_step;
+use super::plane::{plane_revolute_step, translation_step};
 use crate::model::joint::Joint;
 use crate::spatial::plane::{General, Plane, RotationOps};
 use crate::spatial::{Force, Motion, RigidInertia, SpatialTransform, SubspaceKind, Wrench};
 use crate::{Data, Model};
-use nalgebra::{DVector, Vector3};
+use nalgebra::{DVector, Matrix3, Vector3};
 
 /// One step of the first forward recursion for body `i`: `C_i`, world pose, `g_i`, `v_i`
 /// (2.33) and `b_i` (2.37); without `v` velocities and `b_i` are zero.
@@ -24,7 +24,7 @@ pub(crate) fn body_kinematics(
 
 /// [`body_kinematics`] on coordinate slices (taken once per pass by the callers). Revolute
 /// joints about a coordinate axis of an unrotated placement take the written-out path of
-/// [`super::plane`] (inlined into the passes; `p < i`, true for every model, lets the
+/// [`super::plane`], fixed joints with a translation-only placement its translation step (inlined into the passes; `p < i`, true for every model, lets the
 /// compiler drop bounds checks on the parent's entries).
 #[inline(always)]
 pub(crate) fn body_step(model: &Model, data: &mut Data, i: usize, q: &[f64], v: Option<&[f64]>) {
@@ -39,6 +39,12 @@ pub(crate) fn body_step(model: &Model, data: &mut Data, i: usize, q: &[f64], v: 
                 1 => plane_revolute_step::<1>(model, data, i, p, ax, qi, qd),
                 _ => plane_revolute_step::<2>(model, data, i, p, ax, qi, qd),
             }
+            return;
+        }
+    }
+    if let (Joint::Fixed, Some(p), Some(_)) = (&body.joint, body.parent, v) {
+        if p < i && body.placement_x.rot == Matrix3::identity() {
+            translation_step(model, data, i, p);
             return;
         }
     }
