@@ -1,11 +1,13 @@
 //! Recursive kinematics (2.33)-(2.37): the first forward recursion (Algorithm 2.2) shared by
 //! every algorithm of the crate, and the public forward-kinematics entry points.
 //!
-//! Split by concept: [`joint`] relative joint kinematics `C_i`, `J_i qdot_i`, `Jdot_i qdot_i`
-//! (2.35)-(2.36) and products with `J_i`; [`coupled`] coupled parts of closed-form mechanisms
-//! (ch. 3); [`rotor`] Harmonic Drive rotor frames (3.1)-(3.2); [`step`] one body step of the
-//! recursion (world pose, `g_i`, `v_i` (2.33), `b_i` (2.37)) and body forces (2.56); this file
-//! the passes over all bodies.
+//! Split by concept: `joint` relative joint kinematics `C_i`, `J_i qdot_i`, `Jdot_i qdot_i`
+//! (2.35)-(2.36) and products with `J_i`; `coupled` coupled parts of closed-form mechanisms
+//! (ch. 3); `rotor` Harmonic Drive rotor frames (3.1)-(3.2); `step` one body step of the
+//! recursion (world pose, `g_i`, `v_i` (2.33), `b_i` (2.37)) and body forces (2.56); `plane`
+//! its written-out forms for revolute joints about a coordinate axis of an unrotated placement
+//! and for translation-only fixed joints (tested equal to the general step); this file the
+//! passes over all bodies, which take `q`, `v` as slices once.
 
 mod coupled;
 mod joint;
