@@ -1,6 +1,7 @@
 //! Automatic sub-system generation (section 2.9): group bodies with overlapping index sets,
 //! close each group under the paths to its common parent, and rewire the body list.
 
+use super::rigid::is_axisymmetric;
 use super::{Node, NodeKind, Subsystem, MAX_SUBSYSTEM_DOF};
 use crate::model::{Body, BodyId, MAX_INDEX_SET};
 use crate::ModelError;
@@ -162,9 +163,17 @@ fn build_subsystem(bodies: &[Body], members: Vec<BodyId>) -> Result<Subsystem, M
                 .any(|(j, b)| b.parent == Some(m) && !is_member(j))
         })
         .collect::<Vec<_>>();
-    let rigid_member = members
+    let rigid_member: Vec<bool> = members
         .iter()
         .map(|m| !with_outside_children.contains(m))
+        .collect();
+    let axisymmetric_member = members
+        .iter()
+        .zip(&rigid_member)
+        .map(|(&m, &rigid)| {
+            let inertia = &bodies[m].inertia;
+            rigid && is_axisymmetric(&inertia.com(), &inertia.inertia_about_com())
+        })
         .collect();
     Ok(Subsystem {
         members,
@@ -173,6 +182,7 @@ fn build_subsystem(bodies: &[Body], members: Vec<BodyId>) -> Result<Subsystem, M
         columns,
         with_outside_children,
         rigid_member,
+        axisymmetric_member,
     })
 }
 

@@ -37,6 +37,9 @@ pub struct Subsystem {
     /// Per member: true if it has no child outside the sub-system, so that its `M-bar_j` in
     /// the backward pass is still its rigid-body inertia `M_j` (cheaper congruence).
     pub(crate) rigid_member: Vec<bool>,
+    /// Per member: rigid and axisymmetric about its z axis (`super::rigid::is_axisymmetric`), so
+    /// that `M-hat_j` is applied in 12 flops.
+    pub(crate) axisymmetric_member: Vec<bool>,
 }
 
 impl Subsystem {

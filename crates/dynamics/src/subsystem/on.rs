@@ -12,6 +12,7 @@
 
 use super::chol::{cholesky, solve};
 pub(crate) use super::rigid::add_rigid_congruence;
+use super::rigid::Axisymmetric;
 use super::MAX_SUBSYSTEM_DOF as MAX;
 use crate::kinematics::joint_column;
 use crate::spatial::{ArticulatedInertia, Force, Motion, SpatialTransform};
@@ -126,7 +127,8 @@ fn backward_n<const N: usize>(
     }
     let mut kc = ArticulatedInertia::zero();
     let mut fc = Force::zero();
-    for (mi, &j) in sub.members.iter().enumerate() {
+    let kinds = sub.rigid_member.iter().zip(&sub.axisymmetric_member);
+    for (&j, (&rigid, &axisymmetric)) in sub.members.iter().zip(kinds) {
         if let Some(rc) = &data.rotor_constant[j] {
             // Spin-invariant rotor: constant B_S row and M_S diagonal entry, one column only,
             // its C^T (M b - f) already in the parent frame (in `fbar`).
@@ -139,25 +141,23 @@ fn backward_n<const N: usize>(
             continue;
         }
         let m = &data.mbar[j];
-        // A rigid member's M-hat is its rigid-body inertia: apply it in the compact form (2.22).
-        let (rigid, inertia) = (sub.rigid_member[mi], &model.bodies[j].inertia);
-        let apply = |a: &Motion| {
-            if rigid {
-                inertia.apply(a)
-            } else {
-                m.apply(a)
+        let inertia = &model.bodies[j].inertia;
+        let ((cj, bj), jj, fj) = (
+            hat_transform_bias(model, data, s, j),
+            &data.jbar[j],
+            &data.fbar[j],
+        );
+        let on = (&mut ms, &mut bs, &mut rhs);
+        // A rigid member's M-hat is its rigid-body inertia: the compact form (2.22), shorter
+        // still for an axisymmetric one.
+        let hat_f = match (axisymmetric, rigid) {
+            (true, _) => {
+                let ax = Axisymmetric::of(inertia);
+                add_member(on, n, jj, cj, bj, fj, |a| ax.apply(a))
             }
+            (false, true) => add_member(on, n, jj, cj, bj, fj, |a| inertia.apply(a)),
+            (false, false) => add_member(on, n, jj, cj, bj, fj, |a| m.apply(a)),
         };
-        let ((cj, bj), jj) = (hat_transform_bias(model, data, s, j), &data.jbar[j]);
-        let hat_f = apply(bj) - data.fbar[j];
-        for c in 0..n {
-            let mj = apply(&jj[c]);
-            for r in c..n {
-                ms[r][c] += jj[r].dot(&mj);
-            }
-            bs[c] += cj.tr_apply_force(&mj);
-            rhs[c] -= jj[c].dot(&hat_f);
-        }
         if sub.parent.is_some() {
             if rigid {
                 add_rigid_congruence(inertia, cj, &mut kc);
@@ -196,6 +196,32 @@ fn backward_n<const N: usize>(
     data.mbar[p] += kc;
     data.fbar[p] -= fc;
     Ok(())
+}
+
+/// Adds member `j`'s terms of (2.76) to `M_S`, `B_S` and the right-hand side `Q_S - f_S`:
+/// `J-hat^T M-hat J-hat`, `C-hat^T M-hat J-hat` and `-J-hat^T f-hat`, with `M-hat` applied by
+/// `apply` (monomorphised per inertia kind); returns `f-hat = M-hat b-hat - f-bar` (member frame).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn add_member<const N: usize>(
+    (ms, bs, rhs): (&mut [[f64; N]; N], &mut [Force; N], &mut [f64; N]),
+    n: usize,
+    jj: &[Motion; MAX],
+    cj: &SpatialTransform,
+    bj: &Motion,
+    fj: &Force,
+    apply: impl Fn(&Motion) -> Force,
+) -> Force {
+    let hat_f = apply(bj) - *fj;
+    for c in 0..n {
+        let mj = apply(&jj[c]);
+        for r in c..n {
+            ms[r][c] += jj[r].dot(&mj);
+        }
+        bs[c] += cj.tr_apply_force(&mj);
+        rhs[c] -= jj[c].dot(&hat_f);
+    }
+    hat_f
 }
 
 /// Second forward step of sub-system `s` (Algorithm 2.4, (2.90)): `qddot_S = P_S a_p + p_S`
