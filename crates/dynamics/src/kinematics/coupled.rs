@@ -27,9 +27,13 @@ pub(super) fn coupled_kinematics(
     }
     let n = body.v_set.len();
     let (mut qin, mut qdin) = ([0.0; MAX_COUPLED], [0.0; MAX_COUPLED]);
-    for k in 0..n {
-        qin[k] = q[body.q_set.as_slice()[k]];
-        qdin[k] = v.map_or(0.0, |v| v[body.v_set.as_slice()[k]]);
+    // Constant trip counts (unrolled) guarded by `n <= MAX_COUPLED` (checked by the builder):
+    // cheaper than loops over `0..n` or iterator chains (measured).
+    for k in 0..MAX_COUPLED {
+        if k < n {
+            qin[k] = q[body.q_set.as_slice()[k]];
+            qdin[k] = v.map_or(0.0, |v| v[body.v_set.as_slice()[k]]);
+        }
     }
     let motion = match mechanism {
         Mechanism::Ankle(part) => part.relative_cached(&qin[..n], &qdin[..n], &mut data.ankle_loop),
@@ -64,12 +68,13 @@ pub(super) fn coupled_kinematics(
     };
     let jacobian = &mut data.jacobian6[i];
     let mut rel = Motion::zero();
-    // An indexed loop: cheaper here than the zip/take/enumerate chain (measured).
     #[allow(clippy::needless_range_loop)]
-    for c in 0..n.min(MAX_COUPLED) {
-        let col = &m.jacobian[c];
-        jacobian.set_column(c, col);
-        rel += Motion::from_vector(col) * qdin[c];
+    for c in 0..MAX_COUPLED {
+        if c < n {
+            let col = &m.jacobian[c];
+            jacobian.set_column(c, col);
+            rel += Motion::from_vector(col) * qdin[c];
+        }
     }
     let mut cj = Motion::from_vector(&m.bias);
     cj.lin += rel.ang.cross(&rel.lin);
