@@ -124,17 +124,7 @@ fn coupled_parts_on_random_trees_all_methods_agree() {
             let q = random_q(&model, &mut rng);
             let v = random_vec(model.nv(), 2.0, &mut rng);
             let tau = random_vec(model.nv(), 5.0, &mut rng);
-            let mut run = |algo| {
-                forward_dynamics(&model, &mut data, &q, &v, &tau, None, algo)
-                    .unwrap()
-                    .clone()
-            };
-            let (on, crba, sparse) = (
-                run(Algorithm::On),
-                run(Algorithm::Crba),
-                run(Algorithm::Sparse),
-            );
-            assert_methods_agree(seed, &on, &crba, &sparse);
+            let on = check_methods(seed, &model, &mut data, &q, &v, &tau, None);
             let back = inverse_dynamics(&model, &mut data, &q, &v, &on, None).unwrap();
             assert!(rel_diff(back, &tau) < 1e-9, "seed {seed}: RNEA(O(n))");
         }

@@ -3,7 +3,7 @@
 
 mod loop_support;
 
-use biped_dynamics::{forward_dynamics, inverse_dynamics, Algorithm, Data, Model, NodeKind};
+use biped_dynamics::{inverse_dynamics, Data, Model, NodeKind};
 use loop_support::*;
 
 /// Accelerations of the three methods agree and RNEA inverts them.
@@ -14,16 +14,7 @@ fn check_model(model: &Model, seed: u64) {
         let q = random_q(model, &mut rng);
         let v = random_vec(model.nv(), 2.0, &mut rng);
         let tau = random_vec(model.nv(), 5.0, &mut rng);
-        let on = forward_dynamics(model, &mut data, &q, &v, &tau, None, Algorithm::On)
-            .unwrap()
-            .clone();
-        let crba = forward_dynamics(model, &mut data, &q, &v, &tau, None, Algorithm::Crba)
-            .unwrap()
-            .clone();
-        let sparse = forward_dynamics(model, &mut data, &q, &v, &tau, None, Algorithm::Sparse)
-            .unwrap()
-            .clone();
-        assert_methods_agree(seed, &on, &crba, &sparse);
+        let on = check_methods(seed, model, &mut data, &q, &v, &tau, None);
         let back = inverse_dynamics(model, &mut data, &q, &v, &on, None).unwrap();
         assert!(
             rel_diff(back, &tau) < 1e-9,

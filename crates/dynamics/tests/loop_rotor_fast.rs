@@ -5,7 +5,7 @@
 mod loop_support;
 mod rotor_support;
 
-use biped_dynamics::{forward_dynamics, inverse_dynamics, Algorithm, Data, Model, Wrench};
+use biped_dynamics::{inverse_dynamics, Data, Model, Wrench};
 use loop_support::*;
 use nalgebra::{DVector, Vector3};
 use proptest::prelude::*;
@@ -24,15 +24,7 @@ fn check_state(model: &Model, seed: u64, with_fext: bool) {
         .map(|_| Wrench::new(r(), r()))
         .collect();
     let fext = with_fext.then_some(fext.as_slice());
-    let solve = |data: &mut Data, algo| {
-        forward_dynamics(model, data, &q, &v, &tau, fext, algo)
-            .unwrap()
-            .clone()
-    };
-    let on = solve(&mut data, Algorithm::On);
-    let crba = solve(&mut data, Algorithm::Crba);
-    let sparse = solve(&mut data, Algorithm::Sparse);
-    assert_methods_agree(seed, &on, &crba, &sparse);
+    let on = check_methods(seed, model, &mut data, &q, &v, &tau, fext);
     let back: DVector<f64> = inverse_dynamics(model, &mut data, &q, &v, &on, fext)
         .unwrap()
         .clone();

@@ -8,7 +8,10 @@ pub use core_support::{
     random_axis, random_inertia, random_pose, random_q, random_vec, rel_diff, rng,
 };
 
-use biped_dynamics::{BodySpec, JointModel, Model, ModelBuilder, RigidInertia};
+use biped_dynamics::{
+    forward_dynamics, Algorithm, BodySpec, Data, JointModel, Model, ModelBuilder, RigidInertia,
+    Wrench,
+};
 use nalgebra::{DVector, Matrix3, Vector3};
 use rand::rngs::StdRng;
 use rand::Rng;
@@ -29,6 +32,32 @@ pub fn assert_methods_agree(
         rel_diff(sparse, crba) < 1e-10,
         "seed {seed}: sparse vs CRBA"
     );
+}
+
+/// Forward dynamics by O(n), CRBA and sparse LTL at one state, asserted to agree
+/// ([`assert_methods_agree`]); returns the O(n) result.
+#[allow(clippy::too_many_arguments)]
+pub fn check_methods(
+    seed: u64,
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    tau: &DVector<f64>,
+    fext: Option<&[Wrench]>,
+) -> DVector<f64> {
+    let mut run = |algo| {
+        forward_dynamics(model, data, q, v, tau, fext, algo)
+            .expect("forward dynamics")
+            .clone()
+    };
+    let (on, crba, sparse) = (
+        run(Algorithm::On),
+        run(Algorithm::Crba),
+        run(Algorithm::Sparse),
+    );
+    assert_methods_agree(seed, &on, &crba, &sparse);
+    on
 }
 
 /// What a generated body is.
