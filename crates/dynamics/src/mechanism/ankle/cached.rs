@@ -80,16 +80,19 @@ impl AnkleCoupling {
         qd_in: &[f64],
         cache: &mut Option<AnkleLoop>,
     ) -> Result<RelativeMotion, MechanismError> {
-        let (q, qd) = input_arrays::<2>(NAME, q_in, qd_in)?;
         let cache = cache.get_or_insert_with(AnkleLoop::default);
         let crank = &self.crank;
-        let same = |a: [f64; 2], b: [f64; 2]| a[0] == b[0] && a[1] == b[1];
-        let hit = |k: &AnkleKey| k.id == crank.id && same(k.q, q) && same(k.qd, qd);
-        let closure = match cache.slots.find(hit) {
-            Some(c) => c,
-            None => cache.close(crank, q, qd)?,
-        };
-        Ok(crank.part_motion(self.part, closure))
+        // A hit needs no input validation: only validated (finite) inputs are stored, and a
+        // NaN never compares equal to a stored key.
+        if let (Ok(q), Ok(qd)) = (<[f64; 2]>::try_from(q_in), <[f64; 2]>::try_from(qd_in)) {
+            let same = |a: [f64; 2], b: [f64; 2]| (a[0] == b[0]) & (a[1] == b[1]);
+            let hit = |k: &AnkleKey| k.id == crank.id && same(k.q, q) && same(k.qd, qd);
+            if let Some(c) = cache.slots.find(hit) {
+                return Ok(crank.part_motion(self.part, c));
+            }
+        }
+        let (q, qd) = input_arrays::<2>(NAME, q_in, qd_in)?;
+        Ok(crank.part_motion(self.part, cache.close(crank, q, qd)?))
     }
 
     /// Part-frame z row of this part's relative Jacobian at `q_in` (for the rotor the motor
@@ -164,6 +167,16 @@ mod tests {
         assert!(c
             .relative_cached(&[f64::NAN, 0.0], &[0.0; 2], &mut cache)
             .is_err());
+        // Stored angles with a bad velocity or wrong lengths are errors, not cache hits.
+        let (q, qd) = ([0.0, 0.1], [0.0, 0.0]);
+        assert!(c.relative_cached(&q, &qd, &mut cache).is_ok());
+        for bad in [[f64::NAN, 0.0], [0.0, f64::INFINITY]] {
+            assert!(c.relative_cached(&q, &bad, &mut cache).is_err());
+        }
+        assert!(c
+            .relative_cached(&[0.0, 0.1, 0.2], &qd, &mut cache)
+            .is_err());
+        assert!(c.relative_cached(&q, &[0.0], &mut cache).is_err());
         assert!(c.spin_row_cached(&[0.0], cache.as_ref()).is_err());
     }
 }

@@ -102,6 +102,14 @@ mod tests {
         }
         let c = tilt.part(KneePart::Nut);
         assert!(c.relative_cached(&[f64::NAN], &[0.0], &mut cache).is_err());
+        // A stored angle with a bad velocity or extra inputs is an error, not a cache hit.
+        let q = -0.05;
+        assert!(c.relative_cached(&[q], &[2.0], &mut cache).is_ok());
+        for qd in [f64::NAN, f64::INFINITY] {
+            assert!(c.relative_cached(&[q], &[qd], &mut cache).is_err());
+        }
+        assert!(c.relative_cached(&[q, q], &[2.0], &mut cache).is_err());
+        assert!(c.relative_cached(&[q], &[], &mut cache).is_err());
         assert!(c.spin_row_cached(&[0.1, 0.2], cache.as_ref()).is_err());
     }
 }
