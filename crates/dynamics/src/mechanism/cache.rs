@@ -38,10 +38,16 @@ impl<K: Copy, L: Copy> LoopSlots<K, L> {
     /// The newest entry whose key satisfies `hit`.
     #[inline]
     pub fn find(&self, hit: impl Fn(&K) -> bool) -> Option<&L> {
-        (0..LOOP_SLOTS)
-            .map(|k| (self.last + LOOP_SLOTS - k) % LOOP_SLOTS)
-            .find_map(|i| self.slots[i].as_ref().filter(|(key, _)| hit(key)))
-            .map(|(_, l)| l)
+        let mut i = self.last % LOOP_SLOTS;
+        for _ in 0..LOOP_SLOTS {
+            if let Some((key, l)) = &self.slots[i] {
+                if hit(key) {
+                    return Some(l);
+                }
+            }
+            i = (i + LOOP_SLOTS - 1) % LOOP_SLOTS;
+        }
+        None
     }
 
     /// Stores an entry in place of the oldest one and returns the stored value.
