@@ -119,3 +119,18 @@ fn rmrc_25x31_rank_one_matches_dense_formula() {
     );
     assert!((&j * &qd - &xd).amax() < 1e-8 * scale);
 }
+
+#[test]
+fn recorded_joints_are_the_arms_pelvis_and_torso_of_the_model() {
+    use biped_control::momentum::LOLA_ARMS;
+    use biped_control::walk::run::RECORDED_JOINTS;
+    let lola = lola::build(LolaType::Type2).unwrap();
+    assert_eq!(&RECORDED_JOINTS[..6], &LOLA_ARMS[..]);
+    assert_eq!(&RECORDED_JOINTS[6..], &["pelvis_rotation", "torso"]);
+    for name in RECORDED_JOINTS {
+        assert!(
+            lola.limits.iter().any(|l| l.name == name),
+            "{name} is not a joint of the Lola model"
+        );
+    }
+}

@@ -4,22 +4,23 @@ use super::controller::WalkController;
 use super::error::{model_err, WalkError};
 use super::evaluate::Evaluator;
 use super::method::{Method, WalkParams};
+use crate::momentum::LOLA_ARMS;
 use crate::pattern::WalkingPattern;
 use biped_robots::lola::LolaModel;
 use serde::Serialize;
 use std::time::Instant;
 
-/// Joints recorded in the time series: arms and pelvis.
-pub const RECORDED_JOINTS: [&str; 8] = [
-    "l_shoulder",
-    "l_upper_arm",
-    "l_forearm",
-    "r_shoulder",
-    "r_upper_arm",
-    "r_forearm",
-    "pelvis_rotation",
-    "torso",
-];
+/// Joints recorded in the time series: the arm joints of [`LOLA_ARMS`], pelvis rotation and torso.
+pub const RECORDED_JOINTS: [&str; 8] = {
+    let mut out = ["pelvis_rotation"; 8];
+    let mut k = 0;
+    while k < LOLA_ARMS.len() {
+        out[k] = LOLA_ARMS[k];
+        k += 1;
+    }
+    out[7] = "torso";
+    out
+};
 
 /// Per-cycle signals of one walk (index = pattern sample).
 #[derive(Debug, Clone, Default)]
