@@ -234,26 +234,37 @@ impl<const N: usize> VJet<N> {
     }
 }
 
-/// `SJet add` (exact derivative propagation).
-impl<const N: usize> std::ops::Add for SJet<N> {
-    type Output = Self;
-    fn add(self, o: Self) -> Self {
-        Self {
-            v: self.v + o.v,
-            d: std::array::from_fn(|j| self.d[j] + o.d[j]),
-            vel: self.vel + o.vel,
-            acc: self.acc + o.acc,
+/// Component-wise `+` and `-` of a jet type (exact derivative propagation).
+macro_rules! jet_linear_ops {
+    ($jet:ident) => {
+        impl<const N: usize> std::ops::Add for $jet<N> {
+            type Output = Self;
+            fn add(self, o: Self) -> Self {
+                Self {
+                    v: self.v + o.v,
+                    d: std::array::from_fn(|j| self.d[j] + o.d[j]),
+                    vel: self.vel + o.vel,
+                    acc: self.acc + o.acc,
+                }
+            }
         }
-    }
+
+        impl<const N: usize> std::ops::Sub for $jet<N> {
+            type Output = Self;
+            fn sub(self, o: Self) -> Self {
+                Self {
+                    v: self.v - o.v,
+                    d: std::array::from_fn(|j| self.d[j] - o.d[j]),
+                    vel: self.vel - o.vel,
+                    acc: self.acc - o.acc,
+                }
+            }
+        }
+    };
 }
 
-/// `SJet sub` (exact derivative propagation).
-impl<const N: usize> std::ops::Sub for SJet<N> {
-    type Output = Self;
-    fn sub(self, o: Self) -> Self {
-        self.add(o.scale(-1.0))
-    }
-}
+jet_linear_ops!(SJet);
+jet_linear_ops!(VJet);
 
 /// `SJet mul` (exact derivative propagation).
 impl<const N: usize> std::ops::Mul for SJet<N> {
@@ -264,32 +275,6 @@ impl<const N: usize> std::ops::Mul for SJet<N> {
             d: std::array::from_fn(|j| self.d[j] * o.v + self.v * o.d[j]),
             vel: self.vel * o.v + self.v * o.vel,
             acc: self.acc * o.v + 2.0 * self.vel * o.vel + self.v * o.acc,
-        }
-    }
-}
-
-/// `VJet add` (exact derivative propagation).
-impl<const N: usize> std::ops::Add for VJet<N> {
-    type Output = Self;
-    fn add(self, o: Self) -> Self {
-        Self {
-            v: self.v + o.v,
-            d: std::array::from_fn(|j| self.d[j] + o.d[j]),
-            vel: self.vel + o.vel,
-            acc: self.acc + o.acc,
-        }
-    }
-}
-
-/// `VJet sub` (exact derivative propagation).
-impl<const N: usize> std::ops::Sub for VJet<N> {
-    type Output = Self;
-    fn sub(self, o: Self) -> Self {
-        Self {
-            v: self.v - o.v,
-            d: std::array::from_fn(|j| self.d[j] - o.d[j]),
-            vel: self.vel - o.vel,
-            acc: self.acc - o.acc,
         }
     }
 }
