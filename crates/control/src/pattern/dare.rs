@@ -10,6 +10,9 @@
 //! solution; the DARE has others). The doubling result is polished by Newton-Kleinman
 //! steps (Lyapunov solves) while the residual decreases: at the 1-5 ms periods of a walking
 //! controller the doubling alone leaves relative residuals ~1e-5 (P spans many magnitudes).
+//! There the doubling can also drift after its best iterate (3 ms, `r = 1e-6`: the last
+//! iterate's closed loop is unstable); the solver then polishes the best iterate, and failing
+//! that continues it by the Riccati recursion (monotone convergence) before polishing.
 
 use super::PatternError;
 use nalgebra::{DMatrix, DVector, SMatrix, SVector};
@@ -33,11 +36,22 @@ pub fn dare_residual<const N: usize>(
     r: f64,
     p: &SMatrix<f64, N, N>,
 ) -> f64 {
+    (riccati_map(a, b, q, r, p) - p).norm() / p.norm().max(1.0)
+}
+
+/// The right-hand side `Q + A^T P A - A^T P b (r + b^T P b)^-1 b^T P A` (one step of the
+/// Riccati recursion; its fixed points solve the DARE).
+fn riccati_map<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    b: &SVector<f64, N>,
+    q: &SMatrix<f64, N, N>,
+    r: f64,
+    p: &SMatrix<f64, N, N>,
+) -> SMatrix<f64, N, N> {
     let pb = p * b;
     let s = r + b.dot(&pb);
     let bpa = pb.transpose() * a;
-    let rhs = q + a.transpose() * p * a - bpa.transpose() * bpa / s;
-    (rhs - p).norm() / p.norm().max(1.0)
+    q + a.transpose() * p * a - bpa.transpose() * bpa / s
 }
 
 /// Solves the DARE `(a, b, q, r)` by doubling; `q` symmetric positive semi-definite, `r > 0`.
@@ -47,12 +61,39 @@ pub fn solve_dare<const N: usize>(
     q: &SMatrix<f64, N, N>,
     r: f64,
 ) -> Result<DareSolution<N>, PatternError> {
+    let (ends, iterations, last) = doubling(a, b, q, r)?;
+    let report = (iterations, last);
+    let [last_p, best_p] = ends;
+    let first = accept(a, b, r, polish(a, b, q, r, last_p), report);
+    if first.is_ok() {
+        return first;
+    }
+    // The doubling can drift (ill-conditioned `I + G_k H_k` when P spans many magnitudes,
+    // e.g. 3 ms with r = 1e-6, where the closed loop of its last iterate is unstable): polish
+    // its best iterate instead, else continue that one by the Riccati recursion, which
+    // converges monotonically to the stabilising solution.
+    let second = accept(a, b, r, polish(a, b, q, r, best_p), report);
+    if second.is_ok() {
+        return second;
+    }
+    let p = value_iteration(a, b, q, r, best_p);
+    accept(a, b, r, polish(a, b, q, r, p), report).or(first)
+}
+
+/// Doubling iterations: the last iterate and the one with the smallest DARE residual (later
+/// ones can drift away again), the doublings done and the last relative change.
+fn doubling<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    b: &SVector<f64, N>,
+    q: &SMatrix<f64, N, N>,
+    r: f64,
+) -> Result<([SMatrix<f64, N, N>; 2], usize, f64), PatternError> {
     const MAX_DOUBLINGS: usize = 80;
-    const NEWTON_STEPS: usize = 8;
     let eye = SMatrix::<f64, N, N>::identity();
     let (mut ak, mut gk, mut hk) = (*a, b * b.transpose() / r, *q);
     let mut iterations = 0;
     let mut last = f64::INFINITY;
+    let mut best = (dare_residual(a, b, q, r, q), *q);
     while iterations < MAX_DOUBLINGS {
         iterations += 1;
         let w_inv = (eye + gk * hk).try_inverse().ok_or(PatternError::Riccati {
@@ -68,11 +109,56 @@ pub fn solve_dare<const N: usize>(
         }
         (ak, gk, hk) = (a_next, g_next, h_next);
         last = change;
+        let p = 0.5 * (hk + hk.transpose());
+        let res = dare_residual(a, b, q, r, &p);
+        if res < best.0 {
+            best = (res, p);
+        }
         if change < 1e-15 {
             break;
         }
     }
-    let mut p = 0.5 * (hk + hk.transpose());
+    Ok(([0.5 * (hk + hk.transpose()), best.1], iterations, last))
+}
+
+/// Riccati recursion `P <- riccati_map(P)` from `p` (at most 2^18 steps, setup time only):
+/// the iterate with the smallest residual, checked every 64 steps, stopping below `1e-12`.
+fn value_iteration<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    b: &SVector<f64, N>,
+    q: &SMatrix<f64, N, N>,
+    r: f64,
+    mut p: SMatrix<f64, N, N>,
+) -> SMatrix<f64, N, N> {
+    let mut best = (dare_residual(a, b, q, r, &p), p);
+    for _ in 0..4096 {
+        for _ in 0..64 {
+            let m = riccati_map(a, b, q, r, &p);
+            p = 0.5 * (m + m.transpose());
+        }
+        let res = dare_residual(a, b, q, r, &p);
+        if !res.is_finite() {
+            break;
+        }
+        if res < best.0 {
+            best = (res, p);
+        }
+        if res < 1e-12 {
+            break;
+        }
+    }
+    best.1
+}
+
+/// Newton-Kleinman steps from `p` while the residual decreases: the result and its residual.
+fn polish<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    b: &SVector<f64, N>,
+    q: &SMatrix<f64, N, N>,
+    r: f64,
+    mut p: SMatrix<f64, N, N>,
+) -> (SMatrix<f64, N, N>, f64) {
+    const NEWTON_STEPS: usize = 8;
     let mut residual = dare_residual(a, b, q, r, &p);
     for _ in 0..NEWTON_STEPS {
         let Some(next) = newton_step(a, b, q, r, &p) else {
@@ -84,24 +170,35 @@ pub fn solve_dare<const N: usize>(
         }
         (p, residual) = (next, res);
     }
-    if residual.is_finite() && residual < 1e-9 {
-        let decay = closed_loop_decay(a, b, r, &p);
-        if decay.is_nan() || decay >= 1e-6 {
-            return Err(PatternError::Unstable {
-                spectral_radius: decay,
-            });
-        }
-        Ok(DareSolution {
-            p,
-            residual,
-            iterations,
-        })
-    } else {
-        Err(PatternError::Riccati {
+    (p, residual)
+}
+
+/// The solution if its residual is below `1e-9` and its closed loop is stable, else the error
+/// (`(iterations, last change)` of the doubling for the report).
+fn accept<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    b: &SVector<f64, N>,
+    r: f64,
+    (p, residual): (SMatrix<f64, N, N>, f64),
+    (iterations, last): (usize, f64),
+) -> Result<DareSolution<N>, PatternError> {
+    if !(residual.is_finite() && residual < 1e-9) {
+        return Err(PatternError::Riccati {
             residual: if residual.is_finite() { residual } else { last },
             iterations,
-        })
+        });
     }
+    let decay = closed_loop_decay(a, b, r, &p);
+    if decay.is_nan() || decay >= 1e-6 {
+        return Err(PatternError::Unstable {
+            spectral_radius: decay,
+        });
+    }
+    Ok(DareSolution {
+        p,
+        residual,
+        iterations,
+    })
 }
 
 /// One Newton-Kleinman step from `p`: with `K = (r + b^T P b)^-1 b^T P A` and
