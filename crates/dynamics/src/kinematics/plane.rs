@@ -158,9 +158,28 @@ mod tests {
         assert!(fixed > 10, "{fixed}");
     }
 
+    /// Equal up to rounding: the written-out and the general products associate differently,
+    /// and with FMA contraction (the build's default) they round differently.
+    fn near(a: &[f64], b: &[f64]) -> bool {
+        let scale = b.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        a.iter().zip(b).all(|(x, y)| (x - y).abs() <= 1e-14 * scale)
+    }
+
+    /// Every output of a body step, flattened: `C_i`, world pose, `g_i`, `v_i`, `b_i`.
+    fn outputs(d: &Data, i: usize) -> [(&'static str, Vec<f64>); 6] {
+        [
+            ("x", d.x[i].to_matrix().as_slice().to_vec()),
+            ("world_rot", d.world_rot[i].as_slice().to_vec()),
+            ("world_pos", d.world_pos[i].as_slice().to_vec()),
+            ("gravity", d.gravity_body[i].as_slice().to_vec()),
+            ("vel", d.vel[i].to_vector().as_slice().to_vec()),
+            ("bias", d.bias_acc[i].to_vector().as_slice().to_vec()),
+        ]
+    }
+
     proptest! {
-        /// The written-out plane and translation steps equal the general step (values equal,
-        /// zeros up to sign) for every body and output, at random states of random plane trees.
+        /// The written-out plane and translation steps equal the general step (up to rounding)
+        /// for every body and output, at random states of random plane trees.
         #[test]
         fn plane_step_equals_general_step(
             seed in 0u64..64,
@@ -176,12 +195,9 @@ mod tests {
                 planes += usize::from(fast.plane_axis[i].is_some());
                 body_kinematics(&model, &mut fast, i, &q, Some(&v));
                 general_body_kinematics(&model, &mut general, i, q.as_slice(), Some(v.as_slice()));
-                prop_assert_eq!(fast.x[i], general.x[i]);
-                prop_assert_eq!(fast.world_rot[i], general.world_rot[i]);
-                prop_assert_eq!(fast.world_pos[i], general.world_pos[i]);
-                prop_assert_eq!(fast.gravity_body[i], general.gravity_body[i]);
-                prop_assert_eq!(fast.vel[i], general.vel[i]);
-                prop_assert_eq!(fast.bias_acc[i], general.bias_acc[i]);
+                for ((what, a), (_, b)) in outputs(&fast, i).into_iter().zip(outputs(&general, i)) {
+                    prop_assert!(near(&a, &b), "body {i} {what}: {a:?} vs {b:?}");
+                }
             }
             prop_assert!(planes > 0);
         }
