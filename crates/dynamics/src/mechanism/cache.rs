@@ -19,16 +19,21 @@ pub fn instance_id() -> u64 {
 pub const LOOP_SLOTS: usize = 4;
 
 /// Round-robin store of `(key, closed loop)` pairs; lookups try the most recent entry first.
+/// Loops are solved into their slot in place ([`Self::store_with`]): a closed loop is ~20
+/// floats, and moving one into the store cost a `memmove` call per closure (~2 % of a
+/// simulation cycle, perf).
 #[derive(Debug, Clone, Copy)]
 pub struct LoopSlots<K: Copy, L: Copy> {
-    slots: [Option<(K, L)>; LOOP_SLOTS],
+    keys: [Option<K>; LOOP_SLOTS],
+    values: [L; LOOP_SLOTS],
     last: usize,
 }
 
-impl<K: Copy, L: Copy> Default for LoopSlots<K, L> {
+impl<K: Copy, L: Copy + Default> Default for LoopSlots<K, L> {
     fn default() -> Self {
         Self {
-            slots: [None; LOOP_SLOTS],
+            keys: [None; LOOP_SLOTS],
+            values: [L::default(); LOOP_SLOTS],
             last: 0,
         }
     }
@@ -40,9 +45,9 @@ impl<K: Copy, L: Copy> LoopSlots<K, L> {
     pub fn find(&self, hit: impl Fn(&K) -> bool) -> Option<&L> {
         let mut i = self.last % LOOP_SLOTS;
         for _ in 0..LOOP_SLOTS {
-            if let Some((key, l)) = &self.slots[i] {
+            if let Some(key) = &self.keys[i] {
                 if hit(key) {
-                    return Some(l);
+                    return Some(&self.values[i]);
                 }
             }
             i = (i + LOOP_SLOTS - 1) % LOOP_SLOTS;
@@ -50,11 +55,20 @@ impl<K: Copy, L: Copy> LoopSlots<K, L> {
         None
     }
 
-    /// Stores an entry in place of the oldest one and returns the stored value.
+    /// Solves a loop into the oldest slot (`solve` writes the value in place) and keys it
+    /// `key`; returns the stored value. On an error the slot is left empty.
     #[inline]
-    pub fn store(&mut self, key: K, value: L) -> &L {
-        self.last = (self.last + 1) % LOOP_SLOTS;
-        &self.slots[self.last].insert((key, value)).1
+    pub fn store_with<E>(
+        &mut self,
+        key: K,
+        solve: impl FnOnce(&mut L) -> Result<(), E>,
+    ) -> Result<&L, E> {
+        let i = (self.last + 1) % LOOP_SLOTS;
+        self.keys[i] = None;
+        solve(&mut self.values[i])?;
+        self.keys[i] = Some(key);
+        self.last = i;
+        Ok(&self.values[i])
     }
 }
 
@@ -62,21 +76,53 @@ impl<K: Copy, L: Copy> LoopSlots<K, L> {
 mod tests {
     use super::*;
 
+    /// Stores `value` under `key` (infallible solve).
+    fn store(s: &mut LoopSlots<u32, u32>, key: u32, value: u32) {
+        let stored = s.store_with(key, |v| {
+            *v = value;
+            Ok::<(), ()>(())
+        });
+        assert_eq!(stored, Ok(&value));
+    }
+
     /// Newest match wins, the oldest entry is evicted first, misses return `None`.
     #[test]
     fn round_robin_lookup_and_eviction() {
         let mut s = LoopSlots::<u32, u32>::default();
         assert!(s.find(|_| true).is_none());
         for k in 0..LOOP_SLOTS as u32 {
-            s.store(k % 2, k);
+            store(&mut s, k % 2, k);
         }
         assert_eq!(s.find(|&k| k == 0), Some(&2));
         assert_eq!(s.find(|&k| k == 1), Some(&3));
-        s.store(7, 9);
-        s.store(8, 10);
-        s.store(9, 11);
+        store(&mut s, 7, 9);
+        store(&mut s, 8, 10);
+        store(&mut s, 9, 11);
         assert_eq!(s.find(|&k| k == 0), None);
         assert_eq!(s.find(|&k| k == 1), Some(&3));
         assert_eq!(s.find(|&k| k == 7), Some(&9));
+    }
+
+    /// A failed solve stores nothing: its slot (the oldest) is emptied, even if partly
+    /// written, and the newest entry stays the newest.
+    #[test]
+    fn failed_solve_leaves_no_entry() {
+        let mut s = LoopSlots::<u32, u32>::default();
+        for k in 0..LOOP_SLOTS as u32 {
+            store(&mut s, k, 10 + k);
+        }
+        let failed = s.store_with(99, |v| {
+            *v = 123;
+            Err("no root")
+        });
+        assert_eq!(failed, Err("no root"));
+        assert!(s.find(|&k| k == 99).is_none());
+        assert!(
+            s.find(|&k| k == 0).is_none(),
+            "the oldest slot was the one emptied"
+        );
+        assert_eq!(s.find(|_| true), Some(&13));
+        store(&mut s, 5, 15);
+        assert_eq!(s.find(|_| true), Some(&15));
     }
 }

@@ -31,15 +31,16 @@ impl AnkleLoop {
         if self.trig.0 != q {
             self.trig = (q, trig(q));
         }
-        let c = crank.solve(q, self.trig.1, qd)?;
-        Ok(self.slots.store(
+        let (key, trig) = (
             AnkleKey {
                 id: crank.id,
                 q,
                 qd,
             },
-            c,
-        ))
+            self.trig.1,
+        );
+        self.slots
+            .store_with(key, |c| crank.solve_into(q, trig, qd, c))
     }
 }
 

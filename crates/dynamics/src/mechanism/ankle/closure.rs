@@ -18,7 +18,7 @@ use nalgebra::{Matrix3, Vector3, Vector6};
 
 /// One slider-crank loop closed at `(q, qd)`: nut travel and foot ball with their partials,
 /// velocity and zero-`qdd` acceleration.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub(crate) struct Closure {
     /// Nut travel `l` (3.29).
     pub l: f64,
@@ -59,6 +59,21 @@ impl SliderCrank {
         trig: [f64; 4],
         qd: [f64; 2],
     ) -> Result<Closure, MechanismError> {
+        let mut c = Closure::default();
+        self.solve_into(q, trig, qd, &mut c)?;
+        Ok(c)
+    }
+
+    /// [`Self::solve`] written into `out` (a loop-cache slot, no copy); `out` is unspecified
+    /// on an error.
+    #[inline]
+    pub(crate) fn solve_into(
+        &self,
+        q: [f64; 2],
+        trig: [f64; 4],
+        qd: [f64; 2],
+        out: &mut Closure,
+    ) -> Result<(), MechanismError> {
         let [s0, c0, s1, c1] = trig;
         let a = &self.act;
         let (e, f, [w0, w1]) = (&a.screw_axis, &a.foot_ball, qd);
@@ -92,7 +107,7 @@ impl SliderCrank {
         let era = e.dot(&foot_acc);
         let d_acc =
             (erd * erd + er * era - foot_dot.norm_squared() - r.dot(&foot_acc) - d_dot * d_dot) / d;
-        Ok(Closure {
+        *out = Closure {
             l: er - d,
             l_q,
             l_dot,
@@ -101,7 +116,8 @@ impl SliderCrank {
             foot_q,
             foot_dot,
             foot_acc,
-        })
+        };
+        Ok(())
     }
 
     /// Pose, Jacobian and bias of one part from the closed loop `c` (3.30)-(3.37).

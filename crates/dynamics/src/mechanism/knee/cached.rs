@@ -27,7 +27,7 @@ impl KneeCoupling {
         let drive = &self.drive;
         let closure = match slots.find(|&(id, x)| id == drive.id && x == q) {
             Some(c) => c,
-            None => slots.store((drive.id, q), drive.solve(q)?),
+            None => slots.store_with((drive.id, q), |c| drive.solve_into(q, c))?,
         };
         Ok(drive.part_motion(self.part, closure, qd))
     }

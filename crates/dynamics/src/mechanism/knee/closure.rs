@@ -16,7 +16,7 @@ use crate::spatial::sin_cos;
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 /// The knee loop closed at one knee angle: screw length, tilt rate and housing frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub(crate) struct KneeClosure {
     /// Screw length `l` (3.4).
     pub l: f64,
@@ -35,6 +35,15 @@ pub(crate) struct KneeClosure {
 impl KneeDrive {
     /// Closes the loop (3.4) at knee angle `q` (finite).
     pub(crate) fn solve(&self, q: f64) -> Result<KneeClosure, MechanismError> {
+        let mut c = KneeClosure::default();
+        self.solve_into(q, &mut c)?;
+        Ok(c)
+    }
+
+    /// [`Self::solve`] written into `out` (a loop-cache slot, no copy); `out` is unspecified
+    /// on an error.
+    #[inline]
+    pub(crate) fn solve_into(&self, q: f64, out: &mut KneeClosure) -> Result<(), MechanismError> {
         let p = &self.params;
         let (s, c) = sin_cos(q);
         let (a, b) = (&p.pin_shank, &p.pivot_thigh);
@@ -59,14 +68,15 @@ impl KneeDrive {
             (self.fixed_axis, 0.0, 0.0)
         };
         let x = Vector3::new(-z.y, z.x, 0.0).normalize();
-        Ok(KneeClosure {
+        *out = KneeClosure {
             l,
             l_q,
             l_qq,
             kappa,
             kappa_q,
             rot: Matrix3::from_columns(&[x, z.cross(&x), z]),
-        })
+        };
+        Ok(())
     }
 
     /// Pose, Jacobian and bias of one part from the closed loop `c` at knee rate `qd`.
