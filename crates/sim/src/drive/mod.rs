@@ -24,6 +24,7 @@
 //! `omega_eps = 1 rad/s` (motor side) gives `h lambda ~ 0.3` on Lola's hip at h = 1 ms.
 
 pub mod actuator;
+pub mod tanh;
 
 pub use actuator::{Actuator, Transmission};
 
@@ -174,6 +175,6 @@ impl FrictionParams {
     #[inline]
     pub fn torque(&self, omega: f64, tau_m: f64) -> f64 {
         let coulomb = self.coulomb + (1.0 - self.efficiency) * tau_m.abs();
-        self.viscous * omega + coulomb * (omega / self.smoothing).tanh()
+        self.viscous * omega + coulomb * tanh::tanh(omega / self.smoothing)
     }
 }
