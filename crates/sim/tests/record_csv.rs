@@ -143,3 +143,83 @@ fn errors_are_typed() {
     }
     std::fs::remove_dir_all(dir).expect("cleanup");
 }
+
+/// One recorder operation of the property test.
+#[derive(Debug, Clone)]
+enum Op {
+    /// New row after a time step.
+    Sample(f64),
+    /// Register signal `k` (`s<k>`) with this length (1: scalar).
+    Register(usize, usize),
+    /// Set signal `k` in the current row to values starting at this number.
+    Set(usize, f64),
+}
+
+fn op() -> impl proptest::strategy::Strategy<Value = Op> {
+    use proptest::prelude::*;
+    prop_oneof![
+        (0.0f64..1.0).prop_map(Op::Sample),
+        (0usize..5, 1usize..4).prop_map(|(k, n)| Op::Register(k, n)),
+        (0usize..5, -9.0f64..9.0).prop_map(|(k, v)| Op::Set(k, v)),
+    ]
+}
+
+proptest::proptest! {
+    /// Against a column-per-`Vec` reference model: random interleavings of registering
+    /// (also after rows exist), sampling and setting give the same columns, NaN where unset,
+    /// and the CSV holds the same rows bit for bit.
+    #[test]
+    fn matches_a_column_model(ops in proptest::collection::vec(op(), 1..60)) {
+        let mut rec = Recorder::new();
+        let mut lens: Vec<Option<usize>> = vec![None; 5];
+        // Reference: column names in registration order and their values.
+        let (mut names, mut cols): (Vec<String>, Vec<Vec<f64>>) = (Vec::new(), Vec::new());
+        let mut t = 0.0;
+        for op in ops {
+            match op {
+                Op::Sample(dt) => {
+                    t += dt;
+                    rec.sample(t).unwrap();
+                    cols.iter_mut().for_each(|c| c.push(f64::NAN));
+                }
+                Op::Register(k, n) if lens[k].is_none() => {
+                    rec.register_vector(&format!("s{k}"), n).unwrap();
+                    lens[k] = Some(n);
+                    for i in 0..n {
+                        names.push(if n == 1 { format!("s{k}") } else { format!("s{k}[{i}]") });
+                        cols.push(vec![f64::NAN; rec.len()]);
+                    }
+                }
+                Op::Set(k, v) if lens[k].is_some() && !rec.is_empty() => {
+                    let n = lens[k].unwrap();
+                    let values: Vec<f64> = (0..n).map(|i| v + i as f64).collect();
+                    rec.set_vector(&format!("s{k}"), &values).unwrap();
+                    let first = names.iter().position(|c| c.starts_with(&format!("s{k}"))).unwrap();
+                    for (i, x) in values.iter().enumerate() {
+                        *cols[first + i].last_mut().unwrap() = *x;
+                    }
+                }
+                _ => {}
+            }
+        }
+        proptest::prop_assert_eq!(rec.column_names(), &names[..]);
+        for (name, expect) in names.iter().zip(&cols) {
+            let got = rec.column(name).unwrap();
+            let same = got.iter().zip(expect).all(|(a, b)| a.to_bits() == b.to_bits());
+            proptest::prop_assert!(same && got.len() == expect.len(), "{name}: {got:?} vs {expect:?}");
+        }
+        if !rec.is_empty() {
+            let dir = scratch("prop");
+            let path = dir.join("r.csv");
+            rec.write_csv(&path).unwrap();
+            let (_, rows) = parse(&std::fs::read_to_string(&path).unwrap());
+            proptest::prop_assert_eq!(rows.len(), rec.len());
+            for (r, row) in rows.iter().enumerate() {
+                for (c, expect) in cols.iter().enumerate() {
+                    let (a, b) = (row[c + 1], expect[r]);
+                    proptest::prop_assert!(a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()));
+                }
+            }
+        }
+    }
+}

@@ -189,7 +189,7 @@ fn largest(rec: &Recorder, lines: impl Iterator<Item = Line>) -> Vec<Line> {
         col.iter().map(|x| (x - first).abs()).fold(0.0, f64::max)
     };
     let mut scored: Vec<(f64, Line)> = lines
-        .filter_map(|l| rec.column(&l.column).ok().map(|c| (excursion(c), l)))
+        .filter_map(|l| rec.column(&l.column).ok().map(|c| (excursion(&c), l)))
         .filter(|(e, _)| *e > 0.0)
         .collect();
     scored.sort_by(|a, b| b.0.total_cmp(&a.0));

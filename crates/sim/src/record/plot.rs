@@ -74,7 +74,7 @@ fn range<'a>(values: impl Iterator<Item = &'a f64>) -> (f64, f64) {
 fn draw(
     time: &[f64],
     names: &[&str],
-    cols: &[&[f64]],
+    cols: &[Vec<f64>],
     path: &Path,
     title: &str,
     y_label: &str,
