@@ -216,6 +216,26 @@ impl Actuator {
         }
     }
 
+    /// [`Self::motor_row_cached`] written into `row`: a rotor row that is already there only
+    /// gets its coefficients replaced (no temporary row: moving one into place stalled on
+    /// store forwarding in the plant's right-hand side, perf).
+    #[inline]
+    pub fn refresh_motor_row(
+        &self,
+        model: &Model,
+        data: &Data,
+        q: &[f64],
+        row: &mut Option<MotorRow>,
+    ) -> Result<(), SimError> {
+        match (&self.transmission, row.as_mut()) {
+            (Transmission::Rotor { body, .. }, Some(r)) => {
+                r.coef = data.coupled_spin_row(model, *body, q)?;
+            }
+            _ => *row = self.motor_row_cached(model, data, q)?,
+        }
+        Ok(())
+    }
+
     /// Adds this actuator's generalized forces to `gen` for the command `cmd` (interpreted by
     /// `mode`) and the current state `i` (voltage mode), returns the motor-side state.
     #[allow(clippy::too_many_arguments)]

@@ -101,7 +101,7 @@ impl Plant {
         let currents = l.currents().start;
         for (k, a) in self.actuators.iter().enumerate() {
             if a.row_varies() {
-                self.rows[k] = a.motor_row_cached(&self.model, &self.data, q)?;
+                a.refresh_motor_row(&self.model, &self.data, q, &mut self.rows[k])?;
             }
             let i = if voltage { z[currents + k] } else { 0.0 };
             let ds = a.apply(self.rows[k].as_ref(), mode, self.commands[k], i, v, tau);
