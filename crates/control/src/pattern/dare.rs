@@ -36,22 +36,7 @@ pub fn dare_residual<const N: usize>(
     r: f64,
     p: &SMatrix<f64, N, N>,
 ) -> f64 {
-    (riccati_map(a, b, q, r, p) - p).norm() / p.norm().max(1.0)
-}
-
-/// The right-hand side `Q + A^T P A - A^T P b (r + b^T P b)^-1 b^T P A` (one step of the
-/// Riccati recursion; its fixed points solve the DARE).
-fn riccati_map<const N: usize>(
-    a: &SMatrix<f64, N, N>,
-    b: &SVector<f64, N>,
-    q: &SMatrix<f64, N, N>,
-    r: f64,
-    p: &SMatrix<f64, N, N>,
-) -> SMatrix<f64, N, N> {
-    let pb = p * b;
-    let s = r + b.dot(&pb);
-    let bpa = pb.transpose() * a;
-    q + a.transpose() * p * a - bpa.transpose() * bpa / s
+    Dare { a, b, q, r }.residual(p)
 }
 
 /// Solves the DARE `(a, b, q, r)` by doubling; `q` symmetric positive semi-definite, `r > 0`.
@@ -61,10 +46,10 @@ pub fn solve_dare<const N: usize>(
     q: &SMatrix<f64, N, N>,
     r: f64,
 ) -> Result<DareSolution<N>, PatternError> {
-    let (ends, iterations, last) = doubling(a, b, q, r)?;
+    let dare = Dare { a, b, q, r };
+    let ([last_p, best_p], iterations, last) = dare.doubling()?;
     let report = (iterations, last);
-    let [last_p, best_p] = ends;
-    let first = accept(a, b, r, polish(a, b, q, r, last_p), report);
+    let first = dare.accept(dare.polish(last_p), report);
     if first.is_ok() {
         return first;
     }
@@ -72,174 +57,178 @@ pub fn solve_dare<const N: usize>(
     // e.g. 3 ms with r = 1e-6, where the closed loop of its last iterate is unstable): polish
     // its best iterate instead, else continue that one by the Riccati recursion, which
     // converges monotonically to the stabilising solution.
-    let second = accept(a, b, r, polish(a, b, q, r, best_p), report);
+    let second = dare.accept(dare.polish(best_p), report);
     if second.is_ok() {
         return second;
     }
-    let p = value_iteration(a, b, q, r, best_p);
-    accept(a, b, r, polish(a, b, q, r, p), report).or(first)
+    let p = dare.value_iteration(best_p);
+    dare.accept(dare.polish(p), report).or(first)
 }
 
-/// Doubling iterations: the last iterate and the one with the smallest DARE residual (later
-/// ones can drift away again), the doublings done and the last relative change.
-fn doubling<const N: usize>(
-    a: &SMatrix<f64, N, N>,
-    b: &SVector<f64, N>,
-    q: &SMatrix<f64, N, N>,
+/// Square matrix of the state dimension.
+type Mat<const N: usize> = SMatrix<f64, N, N>;
+
+/// One DARE `P = Q + A^T P A - A^T P b (r + b^T P b)^-1 b^T P A`.
+struct Dare<'a, const N: usize> {
+    a: &'a Mat<N>,
+    b: &'a SVector<f64, N>,
+    q: &'a Mat<N>,
     r: f64,
-) -> Result<([SMatrix<f64, N, N>; 2], usize, f64), PatternError> {
-    const MAX_DOUBLINGS: usize = 80;
-    let eye = SMatrix::<f64, N, N>::identity();
-    let (mut ak, mut gk, mut hk) = (*a, b * b.transpose() / r, *q);
-    let mut iterations = 0;
-    let mut last = f64::INFINITY;
-    let mut best = (dare_residual(a, b, q, r, q), *q);
-    while iterations < MAX_DOUBLINGS {
-        iterations += 1;
-        let w_inv = (eye + gk * hk).try_inverse().ok_or(PatternError::Riccati {
-            residual: f64::INFINITY,
+}
+
+impl<const N: usize> Dare<'_, N> {
+    /// The right-hand side `Q + A^T P A - A^T P b (r + b^T P b)^-1 b^T P A` (one step of the
+    /// Riccati recursion; its fixed points solve the DARE).
+    fn map(&self, p: &Mat<N>) -> Mat<N> {
+        let (a, b) = (self.a, self.b);
+        let pb = p * b;
+        let s = self.r + b.dot(&pb);
+        let bpa = pb.transpose() * a;
+        self.q + a.transpose() * p * a - bpa.transpose() * bpa / s
+    }
+
+    /// Relative residual `|map(P) - P| / max(|P|, 1)`.
+    fn residual(&self, p: &Mat<N>) -> f64 {
+        (self.map(p) - p).norm() / p.norm().max(1.0)
+    }
+
+    /// State feedback `K = (r + b^T P b)^-1 b^T P A` of `p`.
+    fn gain(&self, p: &Mat<N>) -> SMatrix<f64, 1, N> {
+        let pb = p * self.b;
+        pb.transpose() * self.a / (self.r + self.b.dot(&pb))
+    }
+
+    /// Doubling iterations: the last iterate and the one with the smallest DARE residual
+    /// (later ones can drift away again), the doublings done and the last relative change.
+    fn doubling(&self) -> Result<([Mat<N>; 2], usize, f64), PatternError> {
+        const MAX_DOUBLINGS: usize = 80;
+        let eye = Mat::<N>::identity();
+        let (mut ak, mut gk, mut hk) = (*self.a, self.b * self.b.transpose() / self.r, *self.q);
+        let mut iterations = 0;
+        let mut last = f64::INFINITY;
+        let mut best = (self.residual(self.q), *self.q);
+        while iterations < MAX_DOUBLINGS {
+            iterations += 1;
+            let w_inv = (eye + gk * hk).try_inverse().ok_or(PatternError::Riccati {
+                residual: f64::INFINITY,
+                iterations,
+            })?;
+            let a_next = ak * w_inv * ak;
+            let g_next = gk + ak * w_inv * gk * ak.transpose();
+            let h_next = hk + ak.transpose() * hk * w_inv * ak;
+            let change = (h_next - hk).norm() / h_next.norm().max(1.0);
+            if !change.is_finite() || !a_next.norm().is_finite() || !g_next.norm().is_finite() {
+                break;
+            }
+            (ak, gk, hk) = (a_next, g_next, h_next);
+            last = change;
+            let p = 0.5 * (hk + hk.transpose());
+            let res = self.residual(&p);
+            if res < best.0 {
+                best = (res, p);
+            }
+            if change < 1e-15 {
+                break;
+            }
+        }
+        Ok(([0.5 * (hk + hk.transpose()), best.1], iterations, last))
+    }
+
+    /// Riccati recursion `P <- map(P)` from `p` (at most 2^18 steps, setup time only): the
+    /// iterate with the smallest residual, checked every 64 steps, stopping below `1e-12`.
+    fn value_iteration(&self, mut p: Mat<N>) -> Mat<N> {
+        let mut best = (self.residual(&p), p);
+        for _ in 0..4096 {
+            for _ in 0..64 {
+                let m = self.map(&p);
+                p = 0.5 * (m + m.transpose());
+            }
+            let res = self.residual(&p);
+            if !res.is_finite() {
+                break;
+            }
+            if res < best.0 {
+                best = (res, p);
+            }
+            if res < 1e-12 {
+                break;
+            }
+        }
+        best.1
+    }
+
+    /// Newton-Kleinman steps from `p` while the residual decreases: the result and its
+    /// residual.
+    fn polish(&self, mut p: Mat<N>) -> (Mat<N>, f64) {
+        const NEWTON_STEPS: usize = 8;
+        let mut residual = self.residual(&p);
+        for _ in 0..NEWTON_STEPS {
+            let Some(next) = self.newton_step(&p) else {
+                break;
+            };
+            let res = self.residual(&next);
+            if res.partial_cmp(&residual) != Some(std::cmp::Ordering::Less) {
+                break;
+            }
+            (p, residual) = (next, res);
+        }
+        (p, residual)
+    }
+
+    /// One Newton-Kleinman step from `p`: with the gain `K` and `A_c = A - b K` of `p`, solves
+    /// the Lyapunov equation `P' = A_c^T P' A_c + Q + K^T r K` (dense Kronecker form;
+    /// setup-time only).
+    fn newton_step(&self, p: &Mat<N>) -> Option<Mat<N>> {
+        let k = self.gain(p);
+        let ac = self.a - self.b * k;
+        let rhs = self.q + k.transpose() * k * self.r;
+        let act = DMatrix::from_column_slice(N, N, ac.transpose().as_slice());
+        let lhs = DMatrix::identity(N * N, N * N) - act.kronecker(&act);
+        let sol = lhs
+            .lu()
+            .solve(&DVector::from_column_slice(rhs.as_slice()))?;
+        let next = Mat::<N>::from_column_slice(sol.as_slice());
+        Some(0.5 * (next + next.transpose()))
+    }
+
+    /// The solution if its residual is below `1e-9` and its closed loop is stable, else the
+    /// error (`(iterations, last change)` of the doubling for the report).
+    fn accept(
+        &self,
+        (p, residual): (Mat<N>, f64),
+        (iterations, last): (usize, f64),
+    ) -> Result<DareSolution<N>, PatternError> {
+        if !(residual.is_finite() && residual < 1e-9) {
+            return Err(PatternError::Riccati {
+                residual: if residual.is_finite() { residual } else { last },
+                iterations,
+            });
+        }
+        let decay = self.closed_loop_decay(&p);
+        if decay.is_nan() || decay >= 1e-6 {
+            return Err(PatternError::Unstable {
+                spectral_radius: decay,
+            });
+        }
+        Ok(DareSolution {
+            p,
+            residual,
             iterations,
-        })?;
-        let a_next = ak * w_inv * ak;
-        let g_next = gk + ak * w_inv * gk * ak.transpose();
-        let h_next = hk + ak.transpose() * hk * w_inv * ak;
-        let change = (h_next - hk).norm() / h_next.norm().max(1.0);
-        if !change.is_finite() || !a_next.norm().is_finite() || !g_next.norm().is_finite() {
-            break;
-        }
-        (ak, gk, hk) = (a_next, g_next, h_next);
-        last = change;
-        let p = 0.5 * (hk + hk.transpose());
-        let res = dare_residual(a, b, q, r, &p);
-        if res < best.0 {
-            best = (res, p);
-        }
-        if change < 1e-15 {
-            break;
-        }
+        })
     }
-    Ok(([0.5 * (hk + hk.transpose()), best.1], iterations, last))
-}
 
-/// Riccati recursion `P <- riccati_map(P)` from `p` (at most 2^18 steps, setup time only):
-/// the iterate with the smallest residual, checked every 64 steps, stopping below `1e-12`.
-fn value_iteration<const N: usize>(
-    a: &SMatrix<f64, N, N>,
-    b: &SVector<f64, N>,
-    q: &SMatrix<f64, N, N>,
-    r: f64,
-    mut p: SMatrix<f64, N, N>,
-) -> SMatrix<f64, N, N> {
-    let mut best = (dare_residual(a, b, q, r, &p), p);
-    for _ in 0..4096 {
-        for _ in 0..64 {
-            let m = riccati_map(a, b, q, r, &p);
-            p = 0.5 * (m + m.transpose());
+    /// `|A_c^(2^40)|` for the closed loop of `p`, by repeated squaring: ~0 iff `A_c` is
+    /// stable, i.e. iff `p` is the stabilising solution (the DARE also has non-stabilising
+    /// ones).
+    fn closed_loop_decay(&self, p: &Mat<N>) -> f64 {
+        let mut m = self.a - self.b * self.gain(p);
+        for _ in 0..40 {
+            m = m * m;
+            let norm = m.norm();
+            if !norm.is_finite() || norm > 1e100 {
+                return f64::INFINITY;
+            }
         }
-        let res = dare_residual(a, b, q, r, &p);
-        if !res.is_finite() {
-            break;
-        }
-        if res < best.0 {
-            best = (res, p);
-        }
-        if res < 1e-12 {
-            break;
-        }
+        m.norm()
     }
-    best.1
-}
-
-/// Newton-Kleinman steps from `p` while the residual decreases: the result and its residual.
-fn polish<const N: usize>(
-    a: &SMatrix<f64, N, N>,
-    b: &SVector<f64, N>,
-    q: &SMatrix<f64, N, N>,
-    r: f64,
-    mut p: SMatrix<f64, N, N>,
-) -> (SMatrix<f64, N, N>, f64) {
-    const NEWTON_STEPS: usize = 8;
-    let mut residual = dare_residual(a, b, q, r, &p);
-    for _ in 0..NEWTON_STEPS {
-        let Some(next) = newton_step(a, b, q, r, &p) else {
-            break;
-        };
-        let res = dare_residual(a, b, q, r, &next);
-        if res.partial_cmp(&residual) != Some(std::cmp::Ordering::Less) {
-            break;
-        }
-        (p, residual) = (next, res);
-    }
-    (p, residual)
-}
-
-/// The solution if its residual is below `1e-9` and its closed loop is stable, else the error
-/// (`(iterations, last change)` of the doubling for the report).
-fn accept<const N: usize>(
-    a: &SMatrix<f64, N, N>,
-    b: &SVector<f64, N>,
-    r: f64,
-    (p, residual): (SMatrix<f64, N, N>, f64),
-    (iterations, last): (usize, f64),
-) -> Result<DareSolution<N>, PatternError> {
-    if !(residual.is_finite() && residual < 1e-9) {
-        return Err(PatternError::Riccati {
-            residual: if residual.is_finite() { residual } else { last },
-            iterations,
-        });
-    }
-    let decay = closed_loop_decay(a, b, r, &p);
-    if decay.is_nan() || decay >= 1e-6 {
-        return Err(PatternError::Unstable {
-            spectral_radius: decay,
-        });
-    }
-    Ok(DareSolution {
-        p,
-        residual,
-        iterations,
-    })
-}
-
-/// One Newton-Kleinman step from `p`: with `K = (r + b^T P b)^-1 b^T P A` and
-/// `A_c = A - b K`, solves the Lyapunov equation `P' = A_c^T P' A_c + Q + K^T r K`
-/// (dense Kronecker form; setup-time only).
-fn newton_step<const N: usize>(
-    a: &SMatrix<f64, N, N>,
-    b: &SVector<f64, N>,
-    q: &SMatrix<f64, N, N>,
-    r: f64,
-    p: &SMatrix<f64, N, N>,
-) -> Option<SMatrix<f64, N, N>> {
-    let pb = p * b;
-    let k = pb.transpose() * a / (r + b.dot(&pb));
-    let ac = a - b * k;
-    let rhs = q + k.transpose() * k * r;
-    let act = DMatrix::from_column_slice(N, N, ac.transpose().as_slice());
-    let lhs = DMatrix::identity(N * N, N * N) - act.kronecker(&act);
-    let sol = lhs
-        .lu()
-        .solve(&DVector::from_column_slice(rhs.as_slice()))?;
-    let next = SMatrix::<f64, N, N>::from_column_slice(sol.as_slice());
-    Some(0.5 * (next + next.transpose()))
-}
-
-/// `|A_c^(2^40)|` for the closed loop of `p`, by repeated squaring: ~0 iff `A_c` is stable,
-/// i.e. iff `p` is the stabilising solution (the DARE also has non-stabilising ones).
-fn closed_loop_decay<const N: usize>(
-    a: &SMatrix<f64, N, N>,
-    b: &SVector<f64, N>,
-    r: f64,
-    p: &SMatrix<f64, N, N>,
-) -> f64 {
-    let pb = p * b;
-    let mut m = a - b * (pb.transpose() * a) / (r + b.dot(&pb));
-    for _ in 0..40 {
-        m = m * m;
-        let norm = m.norm();
-        if !norm.is_finite() || norm > 1e100 {
-            return f64::INFINITY;
-        }
-    }
-    m.norm()
 }
