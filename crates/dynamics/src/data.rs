@@ -2,7 +2,7 @@
 
 use crate::mechanism::ankle::AnkleLoop;
 use crate::mechanism::knee::KneeLoopCache;
-use crate::mechanism::MechanismError;
+use crate::mechanism::{MechanismError, SpinRate};
 use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::model::{Body, JointModel};
@@ -89,6 +89,9 @@ pub struct Data {
     pub(crate) rotor_constant: Vec<Option<RotorConstant>>,
     /// Bodies with a [`Data::rotor_constant`], ascending.
     pub(crate) fast_rotors: Vec<usize>,
+    /// Per body: the spin rate of a roller-screw rotor with a [`Data::rotor_constant`] at the
+    /// last forward-dynamics kinematics pass (unused for other bodies).
+    pub(crate) spin_rate: Vec<SpinRate>,
     /// Per body: a fixed-joint leaf without inertia (a sole or tool frame): its `M-bar` stays
     /// zero, so the O(n) backward pass only propagates its force.
     pub(crate) massless_leaf: Vec<bool>,
@@ -243,6 +246,7 @@ impl Data {
             mbar_needed: mbar_needed(model, &rotor_constant, &massless_leaf),
             massless_leaf,
             fast_rotors: (0..n).filter(|&i| rotor_constant[i].is_some()).collect(),
+            spin_rate: vec![SpinRate::default(); n],
             rotor_constant,
             rotor_frame: rotor_frames,
             plane_axis: model.bodies.iter().map(plane_axis).collect(),

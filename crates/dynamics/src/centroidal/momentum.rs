@@ -64,7 +64,7 @@ pub fn centroidal_momentum_current(
     let (mut ang, mut lin) = (Vector3::zeros(), Vector3::zeros());
     for (i, body) in model.bodies().iter().enumerate() {
         let (rot, pos, h, c, m) = match (&data.rotor_constant[i], body.parent()) {
-            (Some(rc), Some(p)) => rotor_momentum(rc, data, p),
+            (Some(rc), Some(p)) => rotor_momentum(rc, data, i, p),
             _ => {
                 let inertia = body.inertia();
                 let h = inertia.apply(&data.vel[i]);
@@ -98,10 +98,11 @@ pub fn centroidal_momentum_current(
 fn rotor_momentum<'d>(
     rc: &RotorConstant,
     data: &'d Data,
+    i: usize,
     p: usize,
 ) -> (&'d Matrix3<f64>, Vector3<f64>, Force, Vector3<f64>, f64) {
     let vel = &data.vel[p];
-    let w = vel.ang + rc.s.ang * data.fd_v[rc.v_index];
+    let w = vel.ang + rc.s.ang * rc.speed(data, i).0;
     let lin = (vel.lin + vel.ang.cross(&rc.com)) * rc.mass;
     let h = Force::new(rc.inertia_com * w + rc.com.cross(&lin), lin);
     (&data.world_rot[p], data.world_pos[p], h, rc.com, rc.mass)

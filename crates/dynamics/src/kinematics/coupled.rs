@@ -7,6 +7,7 @@ use crate::model::coupling::Mechanism;
 use crate::model::{Body, JointModel};
 use crate::spatial::{Motion, SpatialTransform};
 use crate::{Data, Model};
+use nalgebra::{Matrix3, Vector3};
 
 /// Relative kinematics of a coupled part from its mechanism (see [`crate::mechanism`]): the
 /// Jacobian columns go to `jacobian6[i]`; the joint bias adds `omega_rel x v_rel` to the
@@ -25,16 +26,7 @@ pub(super) fn coupled_kinematics(
     if let Mechanism::HarmonicDrive(rotor) = mechanism {
         return rotor_kinematics(rotor, body, data, i, q, v);
     }
-    let n = body.v_set.len();
-    let (mut qin, mut qdin) = ([0.0; MAX_COUPLED], [0.0; MAX_COUPLED]);
-    // Constant trip counts (unrolled) guarded by `n <= MAX_COUPLED` (checked by the builder):
-    // cheaper than loops over `0..n` or iterator chains (measured).
-    for k in 0..MAX_COUPLED {
-        if k < n {
-            qin[k] = q[body.q_set.as_slice()[k]];
-            qdin[k] = v.map_or(0.0, |v| v[body.v_set.as_slice()[k]]);
-        }
-    }
+    let (qin, qdin, n) = inputs(body, q, v);
     let motion = match mechanism {
         Mechanism::Ankle(part) => part.relative_cached(&qin[..n], &qdin[..n], &mut data.ankle_loop),
         Mechanism::Knee(part) => part.relative_cached(&qin[..n], &qdin[..n], &mut data.knee_loop),
@@ -58,14 +50,7 @@ pub(super) fn coupled_kinematics(
             return (body.placement_x, Motion::zero(), Motion::zero());
         }
     };
-    // Pose `placement * (A_pk, r)`: `A_kp = A_pk^T A_placement^T`, origin shifted by the placement
-    // (the identity for parts attached at the parent's frame, as all of Lola's).
-    let pl = &body.placement_x;
-    let x = if data.unplaced[i] {
-        SpatialTransform::new(m.rot.transpose(), m.pos)
-    } else {
-        SpatialTransform::new(m.rot.tr_mul(&pl.rot), pl.trans + pl.rot.tr_mul(&m.pos))
-    };
+    let x = part_transform(&body.placement_x, data.unplaced[i], &m.rot, &m.pos);
     let jacobian = &mut data.jacobian6[i];
     let mut rel = Motion::zero();
     #[allow(clippy::needless_range_loop)]
@@ -79,6 +64,87 @@ pub(super) fn coupled_kinematics(
     let mut cj = Motion::from_vector(&m.bias);
     cj.lin += rel.ang.cross(&rel.lin);
     (x, rel, cj)
+}
+
+/// `C` of a coupled part at pose `(A_pk, r)` relative to its joint frame: `placement * (A_pk, r)`,
+/// i.e. `A_kp = A_pk^T A_placement^T` with the origin shifted by the placement; `unplaced`
+/// (identity placement, as for all of Lola's parts) skips the products.
+#[inline(always)]
+pub(crate) fn part_transform(
+    pl: &SpatialTransform,
+    unplaced: bool,
+    rot: &Matrix3<f64>,
+    pos: &Vector3<f64>,
+) -> SpatialTransform {
+    if unplaced {
+        SpatialTransform::new(rot.transpose(), *pos)
+    } else {
+        SpatialTransform::new(rot.tr_mul(&pl.rot), pl.trans + pl.rot.tr_mul(pos))
+    }
+}
+
+/// `C` of coupled part `body` at the configuration `q` (its mechanism evaluated at zero input
+/// rates), `None` if the mechanism fails there.
+pub(crate) fn coupled_transform(
+    body: &Body,
+    unplaced: bool,
+    q: &[f64],
+) -> Option<SpatialTransform> {
+    let JointModel::Coupled { mechanism, .. } = &body.joint_model else {
+        return None;
+    };
+    let (qin, qdin, n) = inputs(body, q, None);
+    let m = mechanism.motion(&qin[..n], &qdin[..n]).ok()?;
+    let m = RelativeMotion::from_coupled(&m);
+    Some(part_transform(&body.placement_x, unplaced, &m.rot, &m.pos))
+}
+
+/// Spin rate of roller-screw rotor `i`, whose pose the forward-dynamics kinematics skips
+/// (spin-invariant, [`crate::subsystem::rotor`]), into `data.spin_rate[i]` from the loop its
+/// mechanism shares with the other parts of the drive; a mechanism error is recorded in
+/// `mechanism_fault` as by [`coupled_kinematics`].
+pub(crate) fn screw_rotor_rate(body: &Body, data: &mut Data, i: usize, q: &[f64], v: &[f64]) {
+    let (qin, qdin, n) = inputs(body, q, Some(v));
+    let rate = match &body.joint_model {
+        JointModel::Coupled {
+            mechanism: Mechanism::Ankle(part),
+            ..
+        } => part.spin_rate_cached(&qin[..n], &qdin[..n], &mut data.ankle_loop),
+        _ => Ok(None),
+    };
+    match rate {
+        Ok(Some(r)) => data.spin_rate[i] = r,
+        Ok(None) => {
+            let reason = "not a roller-screw rotor".into();
+            let e = MechanismError::BadInput {
+                mechanism: "coupled part",
+                reason,
+            };
+            data.mechanism_fault = Some((i, e));
+        }
+        Err(e) => data.mechanism_fault = Some((i, e)),
+    }
+}
+
+/// The input coordinates and rates of coupled part `body` (unused entries zero) and their
+/// count; without `v` the rates are zero.
+#[inline(always)]
+fn inputs(
+    body: &Body,
+    q: &[f64],
+    v: Option<&[f64]>,
+) -> ([f64; MAX_COUPLED], [f64; MAX_COUPLED], usize) {
+    let n = body.v_set.len();
+    let (mut qin, mut qdin) = ([0.0; MAX_COUPLED], [0.0; MAX_COUPLED]);
+    // Constant trip counts (unrolled) guarded by `n <= MAX_COUPLED` (checked by the builder):
+    // cheaper than loops over `0..n` or iterator chains (measured).
+    for k in 0..MAX_COUPLED {
+        if k < n {
+            qin[k] = q[body.q_set.as_slice()[k]];
+            qdin[k] = v.map_or(0.0, |v| v[body.v_set.as_slice()[k]]);
+        }
+    }
+    (qin, qdin, n)
 }
 
 /// Per body: whether its joint placement is the identity (`C` of the joint is the relative

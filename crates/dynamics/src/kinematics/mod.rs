@@ -15,7 +15,7 @@ mod plane;
 mod rotor;
 mod step;
 
-pub(crate) use coupled::identity_placements;
+pub(crate) use coupled::{coupled_transform, identity_placements};
 pub(crate) use joint::{add_projected_force, joint_column, relative_motion, six};
 pub(crate) use rotor::{rotor_frames, rotor_transform};
 use step::body_step;
@@ -23,6 +23,7 @@ pub(crate) use step::{body_force, body_kinematics, force_of};
 
 use crate::check;
 use crate::spatial::Wrench;
+use crate::subsystem::rotor::RotorRate;
 use crate::{Data, DynamicsError, Model};
 use nalgebra::DVector;
 
@@ -105,8 +106,9 @@ pub(crate) fn first_forward(
 
 /// Kinematic half of the first forward recursion (Algorithm 2.2 without body forces): `C_i`,
 /// world poses, `g_i`, `v_i`, `b_i` and the mechanism loop caches of all bodies except the
-/// spin-invariant Harmonic Drive rotors (see [`crate::subsystem::rotor`]), whose kinematics
-/// the O(n) solve does not need; [`complete_rotor_kinematics`] adds them from the stored `q, v`.
+/// spin-invariant motor rotors (see [`crate::subsystem::rotor`]), whose kinematics the O(n)
+/// solve does not need (of a roller-screw rotor only its spin rate is recorded);
+/// [`complete_rotor_kinematics`] adds them from the stored `q, v`.
 pub(crate) fn first_forward_kinematics(
     model: &Model,
     data: &mut Data,
@@ -119,8 +121,10 @@ pub(crate) fn first_forward_kinematics(
     data.fd_v.as_mut_slice().copy_from_slice(v.as_slice());
     let (q, v) = (q.as_slice(), v.as_slice());
     for i in 0..model.nbodies() {
-        if data.rotor_constant[i].is_none() {
-            body_step(model, data, i, q, Some(v));
+        match data.rotor_constant[i].as_ref().map(|rc| rc.rate) {
+            None => body_step(model, data, i, q, Some(v)),
+            Some(RotorRate::Screw) => coupled::screw_rotor_rate(&model.bodies[i], data, i, q, v),
+            Some(RotorRate::Geared) => {}
         }
     }
 }

@@ -2,6 +2,7 @@
 //! transform at angle `N q + offset` and the rotor's relative kinematics without evaluating
 //! the mechanism.
 
+use super::coupled::part_transform;
 use crate::mechanism::harmonic_drive::HarmonicDriveRotor;
 use crate::mechanism::MechanismError;
 use crate::model::coupling::Mechanism;
@@ -41,8 +42,10 @@ pub(super) fn rotor_kinematics(
     (x, rel, Motion::zero())
 }
 
-/// Per body: the constant frame of a Harmonic Drive rotor (placement times the rotor's initial
-/// pose `A_pk'`, `r_0` of (3.2)) as a transform from the parent, identity for other bodies.
+/// Per body: the constant frame of a motor rotor as a transform from the parent, identity for
+/// other bodies: for a Harmonic Drive rotor the placement times its initial pose (`A_pk'`,
+/// `r_0` of (3.2)), for an ankle roller-screw rotor the placement times its frame at spin angle
+/// zero (3.22). Either rotor spins about this frame's z axis.
 pub(crate) fn rotor_frames(model: &Model) -> Vec<SpatialTransform> {
     let frame = |b: &Body| match &b.joint_model {
         JointModel::Coupled {
@@ -53,6 +56,13 @@ pub(crate) fn rotor_frames(model: &Model) -> Vec<SpatialTransform> {
             let initial = Isometry3::from_parts(Translation3::from(p.position), p.orientation);
             SpatialTransform::from_pose(&(b.placement * initial))
         }
+        JointModel::Coupled {
+            mechanism: Mechanism::Ankle(part),
+            ..
+        } => match part.rotor_frame() {
+            Some((rot, pos)) => part_transform(&b.placement_x, false, &rot, &pos),
+            None => SpatialTransform::identity(),
+        },
         _ => SpatialTransform::identity(),
     };
     model.bodies.iter().map(frame).collect()

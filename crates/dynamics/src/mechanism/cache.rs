@@ -43,16 +43,29 @@ impl<K: Copy, L: Copy> LoopSlots<K, L> {
     /// The newest entry whose key satisfies `hit`.
     #[inline]
     pub fn find(&self, hit: impl Fn(&K) -> bool) -> Option<&L> {
+        self.position(hit).map(|i| &self.values[i])
+    }
+
+    /// Slot of the newest entry whose key satisfies `hit` (read it with [`Self::value`]; no
+    /// borrow is held, so a miss can store into `self`).
+    #[inline]
+    pub fn position(&self, hit: impl Fn(&K) -> bool) -> Option<usize> {
         let mut i = self.last % LOOP_SLOTS;
         for _ in 0..LOOP_SLOTS {
             if let Some(key) = &self.keys[i] {
                 if hit(key) {
-                    return Some(&self.values[i]);
+                    return Some(i);
                 }
             }
             i = (i + LOOP_SLOTS - 1) % LOOP_SLOTS;
         }
         None
+    }
+
+    /// The value in slot `i` (from [`Self::position`]).
+    #[inline]
+    pub fn value(&self, i: usize) -> &L {
+        &self.values[i % LOOP_SLOTS]
     }
 
     /// Solves a loop into the oldest slot (`solve` writes the value in place) and keys it

@@ -84,6 +84,19 @@ impl RelativeMotion {
     }
 }
 
+/// Spin rate of a motor rotor that turns about a fixed axis of its carrier at a
+/// configuration-dependent rate (a roller-screw rotor, (3.22), (3.32)-(3.33)): the spin speed
+/// is `row . qd_in`.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SpinRate {
+    /// `d phi / d q_in` per input (unused entries zero).
+    pub row: [f64; MAX_COUPLED],
+    /// Spin speed `phi_dot = row . qd_in`.
+    pub speed: f64,
+    /// Spin acceleration at `qdd_in = 0`: `qd_in^T (d row / d q_in) qd_in`.
+    pub bias: f64,
+}
+
 /// Why a mechanism cannot be evaluated at the given input.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum MechanismError {

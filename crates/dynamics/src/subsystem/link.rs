@@ -10,6 +10,7 @@
 //! link's `C-hat`, `J-hat`, `b-hat` are its own `C`, `J`, `b`.
 
 use super::on::add_rigid_congruence;
+use super::rotor::RotorRate;
 use crate::model::joint::Joint;
 use crate::spatial::{plane, ArticulatedInertia, Force, JointAxis, Motion};
 use crate::{Data, DynamicsError, Model};
@@ -59,8 +60,13 @@ pub(crate) fn link_rotor_subsystems(
         let (Joint::Revolute(axis) | Joint::Prismatic(axis)) = body.joint else {
             return None;
         };
-        let rotors = s.members.iter().filter(|&&j| rotor_constant[j].is_some());
-        if s.v_set.len() != 1 || body.parent != s.parent || rotors.count() > MAX_LINK_ROTORS {
+        let rotors = s.members.iter().filter_map(|&j| rotor_constant[j].as_ref());
+        let geared = rotors.clone().all(|rc| rc.rate == RotorRate::Geared);
+        if s.v_set.len() != 1
+            || body.parent != s.parent
+            || rotors.count() > MAX_LINK_ROTORS
+            || !geared
+        {
             return None;
         }
         let rigid = s

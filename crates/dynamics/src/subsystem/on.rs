@@ -13,6 +13,7 @@
 use super::chol::{cholesky, solve};
 pub(crate) use super::rigid::add_rigid_congruence;
 use super::rigid::Axisymmetric;
+use super::rotor::RotorRate;
 use super::MAX_SUBSYSTEM_DOF as MAX;
 use crate::kinematics::joint_column;
 use crate::spatial::{ArticulatedInertia, Force, Motion, SpatialTransform};
@@ -133,14 +134,35 @@ fn backward_n<const N: usize>(
     let mut kc = ArticulatedInertia::zero();
     let mut fc = Force::zero();
     let kinds = sub.rigid_member.iter().zip(&sub.axisymmetric_member);
-    for (&j, (&rigid, &axisymmetric)) in sub.members.iter().zip(kinds) {
+    for (m, (&j, (&rigid, &axisymmetric))) in sub.members.iter().zip(kinds).enumerate() {
         if let Some(rc) = &data.rotor_constant[j] {
-            // Spin-invariant rotor: constant B_S row and M_S diagonal entry, one column only,
-            // its C^T (M b - f) already in the parent frame (in `fbar`).
-            let (c, h) = (rc.column, data.fbar[j]);
-            ms[c][c] += rc.sks;
-            bs[c] += rc.ks;
-            rhs[c] -= rc.s.dot(&h);
+            // Spin-invariant rotor: its C^T (M b - f) already in the parent frame (in `fbar`).
+            let h = data.fbar[j];
+            let sh = rc.s.dot(&h);
+            match rc.rate {
+                // Constant B_S row and M_S diagonal entry, one column only.
+                RotorRate::Geared => {
+                    let c = rc.column;
+                    ms[c][c] += rc.sks;
+                    bs[c] += rc.ks;
+                    rhs[c] -= sh;
+                }
+                // Column c of J-hat is s rho_c (see `super::rotor`).
+                RotorRate::Screw => {
+                    let (row, cols) = (&data.spin_rate[j].row, &sub.columns[m]);
+                    let inputs = model.bodies[j].v_set.len().min(row.len());
+                    for k in 0..inputs {
+                        let c = cols[k];
+                        bs[c] += rc.ks * row[k];
+                        rhs[c] -= row[k] * sh;
+                        for l in 0..inputs {
+                            if cols[l] <= c {
+                                ms[c][cols[l]] += rc.sks * row[k] * row[l];
+                            }
+                        }
+                    }
+                }
+            }
             kc += rc.congruence;
             fc += h;
             continue;

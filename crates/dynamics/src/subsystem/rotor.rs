@@ -14,6 +14,14 @@
 //! parent's angular velocity and gravity ([`parent_frame_bias`]). The kinematics of these
 //! rotors are therefore skipped by [`crate::forward_dynamics_kinematics`] and completed only
 //! where another algorithm needs them.
+//!
+//! The ankle's roller-screw rotors (3.22) spin the same way about an axis fixed in the shank,
+//! but at the configuration-dependent rate `phi_dot = rho(q) qdot` with `rho = N_screw dl/dq`
+//! (3.32). With the unit spin twist `s`, their column `c` of `J-hat` is `s rho_c`, so they add
+//! `rho_r rho_c s^T K s` to `M_S`, `rho_c K s` to `B_S`, and the spin acceleration at zero
+//! `qddot`, `sigma = qdot^T (d rho / d q) qdot` (3.33), adds `K s sigma` to their bias force. The
+//! kinematics pass records `rho`, `phi_dot` and `sigma` from the loop the drive's nut and rod
+//! close anyway ([`RotorRate::Screw`]).
 
 use super::on::add_rigid_congruence;
 use crate::mechanism::harmonic_drive::HarmonicDriveRotor;
@@ -25,9 +33,21 @@ use crate::spatial::{
 use crate::Model;
 use nalgebra::{Matrix3, Vector3};
 
+/// How a spin-invariant rotor's spin follows the coordinates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum RotorRate {
+    /// Harmonic Drive rotor (3.1): constant ratio `N` on one coordinate, folded into `s`.
+    Geared,
+    /// Ankle roller-screw rotor (3.22), (3.32)-(3.33): `s` is the unit spin twist, the
+    /// configuration-dependent rate of each kinematics pass is in `Data::spin_rate`.
+    Screw,
+}
+
 /// Spin-invariant quantities of one rotor member of a sub-system (see the module doc).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RotorConstant {
+    /// How the spin follows the coordinates (and what `s` is per unit of).
+    pub(crate) rate: RotorRate,
     /// `K = C^T M C` in the sub-system parent's frame.
     pub(crate) congruence: ArticulatedInertia,
     /// Column of the rotor's coordinate within the sub-system.
@@ -36,7 +56,8 @@ pub(crate) struct RotorConstant {
     pub(crate) ks: Force,
     /// `J^T M J = s^T K s`, the rotor's contribution to the diagonal of `M_S`.
     pub(crate) sks: f64,
-    /// `s = C^-1 J`: the rotor column in the parent frame (`s.ang = N` times the spin axis).
+    /// `s = C^-1 J`: the rotor column in the parent frame (`s.ang = N` times the spin axis;
+    /// the unit spin axis for [`RotorRate::Screw`]).
     pub(crate) s: Motion,
     /// Rotor mass `m`.
     pub(crate) mass: f64,
@@ -44,28 +65,44 @@ pub(crate) struct RotorConstant {
     pub(crate) com: Vector3<f64>,
     /// Rotational inertia about the CoM in parent axes (constant by axisymmetry).
     pub(crate) inertia_com: Matrix3<f64>,
-    /// Velocity index of the driving coordinate.
+    /// Velocity index of the driving coordinate (the first input's for [`RotorRate::Screw`]).
     pub(crate) v_index: usize,
+}
+
+impl RotorConstant {
+    /// Spin speed per unit of `s` and spin acceleration at zero `qddot` of rotor `i` at the
+    /// state of the last forward-dynamics kinematics pass on `data`.
+    #[inline(always)]
+    pub(crate) fn speed(&self, data: &crate::Data, i: usize) -> (f64, f64) {
+        match self.rate {
+            RotorRate::Geared => (data.fd_v[self.v_index], 0.0),
+            RotorRate::Screw => (data.spin_rate[i].speed, data.spin_rate[i].bias),
+        }
+    }
 }
 
 /// `C^T (M b - f_g + h)` of a spin-invariant rotor in its parent's frame (moment about the
 /// parent origin): the wrench that gives the rotor its motion at zero parent acceleration and
 /// zero `qddot` against gravity, (2.56) with (2.37) moved to the parent. With the parent's
-/// angular velocity `w_p` and gravity `g_p` (parent axes) and the rotor rate
+/// angular velocity `w_p` and gravity `g_p` (parent axes), the spin speed `qd` and spin
+/// acceleration `sigma` (per unit of `s`; `sigma = 0` for a constant ratio) and the rotor rate
 /// `w_R = w_p + s.ang qd`: the CoM `c` is fixed in the parent, so `F = m (w_p x (w_p x c) - g_p)`;
-/// the inertia `I_c` is constant in parent axes, so `dL/dt = w_p x (I_c w_R)` (the
-/// `I_c (w_p x s qd)` terms of the rotor's angular acceleration and of the rotating
-/// tensor cancel); the moment about the parent origin adds `c x F`.
+/// the inertia `I_c` is constant in parent axes, so `dL/dt = I_c s.ang sigma + w_p x (I_c w_R)`
+/// (the derivative of `L = I_c w_R` in the parent's rotating axes); the moment about the parent
+/// origin adds `c x F`.
 #[inline]
 pub(crate) fn parent_frame_bias(
     rc: &RotorConstant,
     w_p: &Vector3<f64>,
     g_p: &Vector3<f64>,
-    qd: f64,
+    (qd, sigma): (f64, f64),
 ) -> Force {
     let w = w_p + rc.s.ang * qd;
     let f = (w_p.cross(&w_p.cross(&rc.com)) - g_p) * rc.mass;
-    let n = w_p.cross(&(rc.inertia_com * w)) + rc.com.cross(&f);
+    let mut n = w_p.cross(&(rc.inertia_com * w)) + rc.com.cross(&f);
+    if rc.rate == RotorRate::Screw {
+        n += rc.inertia_com * (rc.s.ang * sigma);
+    }
     Force::new(n, f)
 }
 
@@ -79,23 +116,30 @@ pub(crate) fn constant_congruences(
     for sub in &model.subsystems {
         for (mi, &j) in sub.members.iter().enumerate() {
             let body = &model.bodies[j];
-            let JointModel::Coupled {
-                mechanism: Mechanism::HarmonicDrive(rotor),
-                ..
-            } = &body.joint_model
-            else {
-                continue;
+            let (column, rate) = match &body.joint_model {
+                JointModel::Coupled {
+                    mechanism: Mechanism::HarmonicDrive(rotor),
+                    ..
+                } if body.v_set.len() == 1 => (rotor_column(rotor), RotorRate::Geared),
+                JointModel::Coupled {
+                    mechanism: Mechanism::Ankle(part),
+                    ..
+                } if part.rotor_frame().is_some() => (
+                    Motion::new(Vector3::z(), Vector3::zeros()),
+                    RotorRate::Screw,
+                ),
+                _ => continue,
             };
             let leaf = model.bodies.iter().all(|b| b.parent != Some(j));
-            if !(leaf && sub.rigid_member[mi] && body.parent == sub.parent && body.v_set.len() == 1)
-            {
+            if !(leaf && sub.rigid_member[mi] && body.parent == sub.parent) {
                 continue;
             }
             out[j] = spin_invariant(&body.inertia, &frames[j]).map(|congruence| {
-                let s = frames[j].inv_apply_motion(&rotor_column(rotor));
+                let s = frames[j].inv_apply_motion(&column);
                 let ks = congruence.apply(&s);
                 let frame = &frames[j];
                 RotorConstant {
+                    rate,
                     congruence,
                     column: sub.columns[mi][0],
                     ks,
@@ -176,5 +220,67 @@ mod tests {
         let flat = Matrix3::from_diagonal(&Vector3::new(2e-5, 2.1e-5, 3e-5));
         let flat = RigidInertia::new(0.15, Vector3::zeros(), flat).expect("valid");
         assert!(spin_invariant(&flat, &frame).is_none());
+    }
+
+    /// Ankle roller-screw rotors take the fast path (rate from the loop) when axisymmetric
+    /// about the screw axis, the general one otherwise; nuts and rods never do.
+    #[test]
+    fn ankle_screw_rotors_qualify_when_axisymmetric() {
+        use crate::mechanism::ankle::AnklePart;
+        for off_axis in [false, true] {
+            let (model, parts) = ankle_leg(off_axis);
+            let data = crate::Data::new(&model);
+            for &(act, part, j) in &parts {
+                let rate = data.rotor_constant[j].map(|rc| rc.rate);
+                let fast = part == AnklePart::Rotor && !(off_axis && act == 1);
+                assert_eq!(rate, fast.then_some(RotorRate::Screw), "{part:?} {act}");
+            }
+        }
+    }
+
+    /// Shank, ankle cross and foot with the six parts of the default ankle drive; rotor 1's
+    /// CoM off its axis if `off_axis`. Returns the model and the parts (actuator, part, body).
+    fn ankle_leg(
+        off_axis: bool,
+    ) -> (
+        Model,
+        Vec<(usize, crate::mechanism::ankle::AnklePart, usize)>,
+    ) {
+        use crate::mechanism::ankle::{AnkleDrive, AnkleDriveParams, AnklePart};
+        use crate::model::{BodySpec, ModelBuilder};
+        let drive = AnkleDrive::new(AnkleDriveParams::default()).expect("drive");
+        let ic = Matrix3::from_diagonal(&Vector3::new(4e-5, 4e-5, 2e-5));
+        let com = |x| Vector3::new(x, 0.0, 0.05);
+        let round = RigidInertia::new(0.1, com(0.0), ic).expect("valid");
+        let off = RigidInertia::new(0.1, com(1e-3), ic).expect("valid");
+        let mut b = ModelBuilder::new();
+        let mut add = |name: String, parent, joint, inertia| {
+            b.add_body(BodySpec {
+                name: name.clone(),
+                joint_name: name,
+                parent,
+                joint,
+                placement: Isometry3::identity(),
+                inertia,
+            })
+            .expect("body")
+        };
+        let rev = |axis| JointModel::Revolute { axis };
+        let shank = add("shank".into(), None, rev(Vector3::z_axis()), round);
+        let cross = add("cross".into(), Some(shank), rev(Vector3::y_axis()), round);
+        let foot = add("foot".into(), Some(cross), rev(Vector3::x_axis()), round);
+        let mut parts = vec![];
+        for act in 0..2 {
+            for part in [AnklePart::Nut, AnklePart::Rotor, AnklePart::Rod] {
+                let joint = JointModel::Coupled {
+                    mechanism: Mechanism::Ankle(drive.part(act, part).expect("part")),
+                    inputs: vec![cross, foot],
+                };
+                let inertia = if off_axis && act == 1 { off } else { round };
+                let j = add(format!("{part:?}{act}"), Some(shank), joint, inertia);
+                parts.push((act, part, j));
+            }
+        }
+        (b.build().expect("model"), parts)
     }
 }

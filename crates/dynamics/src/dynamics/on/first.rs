@@ -2,7 +2,7 @@
 //! body forces, `M-bar_i = M_i` and the parent-frame bias of spin-invariant rotors.
 
 use crate::check;
-use crate::kinematics::{force_of, rotor_transform};
+use crate::kinematics::{coupled_transform, force_of, rotor_transform};
 use crate::model::coupling::Mechanism;
 use crate::model::JointModel;
 use crate::spatial::{Force, Wrench};
@@ -82,7 +82,7 @@ fn rotor_bias(
         Some(p) => (data.vel[p].ang, data.gravity_body[p]),
         None => (Vector3::zeros(), model.gravity),
     };
-    let mut h = parent_frame_bias(rc, &w, &g, data.fd_v[rc.v_index]);
+    let mut h = parent_frame_bias(rc, &w, &g, rc.speed(data, i));
     let Some(f) = fext.map(|f| f[i]).filter(|f| *f != Wrench::zero()) else {
         return Ok(h);
     };
@@ -91,7 +91,7 @@ fn rotor_bias(
             mechanism: Mechanism::HarmonicDrive(rotor),
             ..
         } => rotor_transform(rotor, &data.rotor_frame[i], data.fd_q[body.q_index]),
-        _ => None,
+        _ => coupled_transform(body, data.unplaced[i], data.fd_q.as_slice()),
     };
     let Some(x) = x else {
         return Err(DynamicsError::Unsupported(

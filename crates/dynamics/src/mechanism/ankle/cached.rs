@@ -5,7 +5,7 @@ use super::closure::{trig, Closure};
 use super::{AnkleCoupling, AnklePart, SliderCrank, NAME};
 use crate::mechanism::cache::LoopSlots;
 use crate::mechanism::jet::input_arrays;
-use crate::mechanism::{CoupledMotion, MechanismError, RelativeMotion};
+use crate::mechanism::{CoupledMotion, MechanismError, RelativeMotion, SpinRate};
 
 /// Closed slider-crank loops of the last kinematics pass, keyed by crank identity and exact
 /// inputs (see [`crate::mechanism::cache`]): the three parts (nut, rotor, rod) of one actuator share one
@@ -81,6 +81,39 @@ impl AnkleCoupling {
         qd_in: &[f64],
         cache: &mut Option<AnkleLoop>,
     ) -> Result<RelativeMotion, MechanismError> {
+        let closure = self.closure_cached(q_in, qd_in, cache)?;
+        Ok(self.crank.part_motion(self.part, closure))
+    }
+
+    /// Spin rate of a rotor part (3.22), (3.32)-(3.33) at `(q_in, qd_in)`, from `cache` like
+    /// [`Self::relative_cached`]; `None` for the nut and the rod.
+    pub(crate) fn spin_rate_cached(
+        &self,
+        q_in: &[f64],
+        qd_in: &[f64],
+        cache: &mut Option<AnkleLoop>,
+    ) -> Result<Option<SpinRate>, MechanismError> {
+        if self.part != AnklePart::Rotor {
+            return Ok(None);
+        }
+        let c = self.closure_cached(q_in, qd_in, cache)?;
+        let n = self.crank.ratio;
+        Ok(Some(SpinRate {
+            row: [n * c.l_q[0], n * c.l_q[1], 0.0],
+            speed: n * c.l_dot,
+            bias: n * c.l_acc,
+        }))
+    }
+
+    /// This part's slider-crank closed at `(q_in, qd_in)`: from `cache` when it holds it, else
+    /// closed and stored there.
+    #[inline(always)]
+    fn closure_cached<'c>(
+        &self,
+        q_in: &[f64],
+        qd_in: &[f64],
+        cache: &'c mut Option<AnkleLoop>,
+    ) -> Result<&'c Closure, MechanismError> {
         let cache = cache.get_or_insert_with(AnkleLoop::default);
         let crank = &self.crank;
         // A hit needs no input validation: only validated (finite) inputs are stored, and a
@@ -88,12 +121,12 @@ impl AnkleCoupling {
         if let (Ok(q), Ok(qd)) = (<[f64; 2]>::try_from(q_in), <[f64; 2]>::try_from(qd_in)) {
             let same = |a: [f64; 2], b: [f64; 2]| (a[0] == b[0]) & (a[1] == b[1]);
             let hit = |k: &AnkleKey| k.id == crank.id && same(k.q, q) && same(k.qd, qd);
-            if let Some(c) = cache.slots.find(hit) {
-                return Ok(crank.part_motion(self.part, c));
+            if let Some(i) = cache.slots.position(hit) {
+                return Ok(cache.slots.value(i));
             }
         }
         let (q, qd) = input_arrays::<2>(NAME, q_in, qd_in)?;
-        Ok(crank.part_motion(self.part, cache.close(crank, q, qd)?))
+        cache.close(crank, q, qd)
     }
 
     /// Part-frame z row of this part's relative Jacobian at `q_in` (for the rotor the motor
