@@ -2,13 +2,13 @@
 
 use crate::mechanism::ankle::AnkleLoop;
 use crate::mechanism::knee::KneeLoopCache;
-use crate::mechanism::{MechanismError, SpinRate};
+use crate::mechanism::{AxialMotion, MechanismError};
 use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::model::{Body, JointModel};
 use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, SpatialTransform};
+use crate::subsystem::axial::{axial_members, AxialMember};
 use crate::subsystem::link::{link_rotor_subsystems, LinkRotors};
-use crate::subsystem::rotor::{constant_congruences, RotorConstant};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
 use crate::Model;
 use nalgebra::{
@@ -86,12 +86,12 @@ pub struct Data {
     /// Constant frames of Harmonic Drive rotors (placement times initial rotor pose), per body.
     pub(crate) rotor_frame: Vec<SpatialTransform>,
     /// Spin-invariant `C^T M C`, `B_S` row and `M_S` entry of axisymmetric rotor members (2.76).
-    pub(crate) rotor_constant: Vec<Option<RotorConstant>>,
-    /// Bodies with a [`Data::rotor_constant`], ascending.
-    pub(crate) fast_rotors: Vec<usize>,
-    /// Per body: the spin rate of a roller-screw rotor with a [`Data::rotor_constant`] at the
+    pub(crate) axial_member: Vec<Option<AxialMember>>,
+    /// Bodies with a [`Data::axial_member`], ascending.
+    pub(crate) axial_members: Vec<usize>,
+    /// Per body: the spin rate of a roller-screw rotor with a [`Data::axial_member`] at the
     /// last forward-dynamics kinematics pass (unused for other bodies).
-    pub(crate) spin_rate: Vec<SpinRate>,
+    pub(crate) axial_motion: Vec<AxialMotion>,
     /// Per body: a fixed-joint leaf without inertia (a sole or tool frame): its `M-bar` stays
     /// zero, so the O(n) backward pass only propagates its force.
     pub(crate) massless_leaf: Vec<bool>,
@@ -136,7 +136,7 @@ pub struct Data {
 /// of a link-with-rotors sub-system, whose step reads `mbar`, and for massless leaves.
 fn mbar_needed(
     model: &Model,
-    rotor_constant: &[Option<RotorConstant>],
+    axial_member: &[Option<AxialMember>],
     massless_leaf: &[bool],
 ) -> Vec<bool> {
     let mut needed: Vec<bool> = massless_leaf.iter().map(|m| !m).collect();
@@ -145,10 +145,7 @@ fn mbar_needed(
             needed[j] = !rigid;
         }
     }
-    for lr in link_rotor_subsystems(model, rotor_constant)
-        .iter()
-        .flatten()
-    {
+    for lr in link_rotor_subsystems(model, axial_member).iter().flatten() {
         needed[lr.link] = true;
     }
     needed
@@ -207,7 +204,7 @@ impl Data {
             }
         }
         let rotor_frames = crate::kinematics::rotor_frames(model);
-        let rotor_constant = constant_congruences(model, &rotor_frames);
+        let axial_member = axial_members(model, &rotor_frames);
         let massless_leaf = massless_leaves(model);
         let mut col_offset = vec![0; n + 1];
         for (i, b) in model.bodies.iter().enumerate() {
@@ -242,12 +239,12 @@ impl Data {
             sub_l: vec![[[0.0; MAX_SUBSYSTEM_DOF]; MAX_SUBSYSTEM_DOF]; ns],
             sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
-            link_rotors: link_rotor_subsystems(model, &rotor_constant),
-            mbar_needed: mbar_needed(model, &rotor_constant, &massless_leaf),
+            link_rotors: link_rotor_subsystems(model, &axial_member),
+            mbar_needed: mbar_needed(model, &axial_member, &massless_leaf),
             massless_leaf,
-            fast_rotors: (0..n).filter(|&i| rotor_constant[i].is_some()).collect(),
-            spin_rate: vec![SpinRate::default(); n],
-            rotor_constant,
+            axial_members: (0..n).filter(|&i| axial_member[i].is_some()).collect(),
+            axial_motion: vec![AxialMotion::default(); n],
+            axial_member,
             rotor_frame: rotor_frames,
             plane_axis: model.bodies.iter().map(plane_axis).collect(),
             unplaced: crate::kinematics::identity_placements(model),

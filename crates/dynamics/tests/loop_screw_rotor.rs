@@ -1,9 +1,9 @@
-//! Ankle roller-screw rotors on the spin-invariant fast path of the O(n) algorithm (spin rate
-//! `N_screw dl/dq` read from the slider-crank loop, no rotor kinematics): O(n) against CRBA and
-//! sparse LTL (which evaluate the spun rotor poses), RNEA as the inverse, external wrenches also
-//! on the rotors, and the centroidal momentum against `A_G v`. Rotors axisymmetric (fast path)
-//! or generic (general path), on a floating shank whose foot carries a toe (a child outside the
-//! ankle sub-system).
+//! Ankle roller-screw rotors and nuts on the axial path of the O(n) algorithm (spin rate
+//! `N_screw dl/dq` and nut travel read from the slider-crank loop, no part kinematics): O(n)
+//! against CRBA and sparse LTL (which evaluate the spun and moved part poses), RNEA as the
+//! inverse, external wrenches also on the rotors and nuts, and the centroidal momentum against
+//! `A_G v`. Rotors axisymmetric (axial path) or generic (general path), on a floating shank
+//! whose foot carries a toe (a child outside the ankle sub-system).
 
 mod loop_support;
 

@@ -5,16 +5,18 @@
 //! `h_G = sum_i X_G,i^* M_i v_i`: each body's momentum (2.22) moved to the CoM, which equals
 //! `A_G v` of (7.2) (both are the total momentum of the same body velocities). Ordinary bodies
 //! use their world pose and velocity from the pass. A spin-invariant Harmonic Drive rotor
-//! (3.1)-(3.2) (`subsystem::rotor`) has no pose there; its momentum is formed in
+//! (3.1)-(3.2) (`subsystem::axial`) has no pose there; its momentum is formed in
 //! its carrier's (parent's) frame from constants of the model: CoM `c` fixed in the carrier,
 //! inertia `I_c` about it constant in carrier axes (axisymmetry), so with the carrier velocity
 //! `[w_p; v_p]` and the spin column `s` (`s.ang = N` times the axis, carrier axes) its linear
 //! momentum is `m (v_p + w_p x c)` and its angular momentum about its CoM
 //! `I_c (w_p + s.ang qd)` (carrier motion plus the spin term `I N qd` about the axis).
-//! Rotors without that symmetry are ordinary bodies of the pass (the general path).
+//! Rotors without that symmetry are ordinary bodies of the pass (the general path). The ankle's
+//! roller-screw rotors and nuts (axial members, `subsystem::axial`) are formed the same way from
+//! the spin rate or the travel the pass recorded (a nut's CoM moves along its axis).
 
 use crate::jacobian::JacobianError;
-use crate::subsystem::rotor::RotorConstant;
+use crate::subsystem::axial::{AxialKind, AxialMember};
 use crate::{forward_dynamics_kinematics, Data, Force, Model};
 use nalgebra::{DVector, Matrix3, Vector3};
 
@@ -63,8 +65,8 @@ pub fn centroidal_momentum_current(
     let (mut mass, mut moment) = (0.0, Vector3::zeros());
     let (mut ang, mut lin) = (Vector3::zeros(), Vector3::zeros());
     for (i, body) in model.bodies().iter().enumerate() {
-        let (rot, pos, h, c, m) = match (&data.rotor_constant[i], body.parent()) {
-            (Some(rc), Some(p)) => rotor_momentum(rc, data, i, p),
+        let (rot, pos, h, c, m) = match (&data.axial_member[i], body.parent()) {
+            (Some(rc), Some(p)) => axial_momentum(rc, data, i, p),
             _ => {
                 let inertia = body.inertia();
                 let h = inertia.apply(&data.vel[i]);
@@ -92,18 +94,24 @@ pub fn centroidal_momentum_current(
     })
 }
 
-/// A spin-invariant rotor's carrier pose, its momentum in carrier axes (moment about the
-/// carrier origin), its CoM in carrier coordinates and its mass (see the module doc).
+/// An axial member's carrier pose, its momentum in carrier axes (moment about the carrier
+/// origin), its CoM in carrier coordinates and its mass (see [`crate::subsystem::axial`]): it
+/// turns at `w_p + s.ang qd`; a rotor's CoM moves with the carrier, a slider's also along `s.lin`.
 #[inline]
-fn rotor_momentum<'d>(
-    rc: &RotorConstant,
+fn axial_momentum<'d>(
+    rc: &AxialMember,
     data: &'d Data,
     i: usize,
     p: usize,
 ) -> (&'d Matrix3<f64>, Vector3<f64>, Force, Vector3<f64>, f64) {
     let vel = &data.vel[p];
-    let w = vel.ang + rc.s.ang * rc.speed(data, i).0;
-    let lin = (vel.lin + vel.ang.cross(&rc.com)) * rc.mass;
-    let h = Force::new(rc.inertia_com * w + rc.com.cross(&lin), lin);
-    (&data.world_rot[p], data.world_pos[p], h, rc.com, rc.mass)
+    let (c, qd, _) = rc.state(data, i);
+    let w = vel.ang + rc.s.ang * qd;
+    let mut v = vel.lin + vel.ang.cross(&c);
+    if rc.kind == AxialKind::Slider {
+        v += rc.s.lin * qd;
+    }
+    let lin = v * rc.mass;
+    let h = Force::new(rc.inertia_com * w + c.cross(&lin), lin);
+    (&data.world_rot[p], data.world_pos[p], h, c, rc.mass)
 }

@@ -49,7 +49,7 @@ pub fn forward_dynamics<'d>(
 /// (`C_i`), `world_rot[i]` / `world_pos[i]`, `vel[i]`, `bias_acc[i]`, `gravity_body[i]`, and
 /// the mechanisms' loop caches. The kinematics of rotors whose inertia is axisymmetric about
 /// their spin axis are skipped (the O(n) solve works with their constant parent-frame
-/// inertia, `subsystem::rotor`): use [`crate::forward_kinematics`] for those. Forces, torques
+/// inertia, `subsystem::axial`): use [`crate::forward_kinematics`] for those. Forces, torques
 /// and external wrenches can then be computed from these kinematics (e.g. contact at the feet,
 /// drive torques) and passed to [`forward_dynamics_solve`].
 ///

@@ -99,23 +99,23 @@ pub(crate) fn coupled_transform(
     Some(part_transform(&body.placement_x, unplaced, &m.rot, &m.pos))
 }
 
-/// Spin rate of roller-screw rotor `i`, whose pose the forward-dynamics kinematics skips
-/// (spin-invariant, [`crate::subsystem::rotor`]), into `data.spin_rate[i]` from the loop its
-/// mechanism shares with the other parts of the drive; a mechanism error is recorded in
-/// `mechanism_fault` as by [`coupled_kinematics`].
-pub(crate) fn screw_rotor_rate(body: &Body, data: &mut Data, i: usize, q: &[f64], v: &[f64]) {
+/// Spin or travel of axial member `i` (a roller-screw rotor or nut, whose pose the
+/// forward-dynamics kinematics skips, [`crate::subsystem::axial`]) into `data.axial_motion[i]`
+/// from the loop its mechanism shares with the other parts of the drive; a mechanism error is
+/// recorded in `mechanism_fault` as by [`coupled_kinematics`].
+pub(crate) fn axial_motion(body: &Body, data: &mut Data, i: usize, q: &[f64], v: &[f64]) {
     let (qin, qdin, n) = inputs(body, q, Some(v));
     let rate = match &body.joint_model {
         JointModel::Coupled {
             mechanism: Mechanism::Ankle(part),
             ..
-        } => part.spin_rate_cached(&qin[..n], &qdin[..n], &mut data.ankle_loop),
+        } => part.axial_motion_cached(&qin[..n], &qdin[..n], &mut data.ankle_loop),
         _ => Ok(None),
     };
     match rate {
-        Ok(Some(r)) => data.spin_rate[i] = r,
+        Ok(Some(r)) => data.axial_motion[i] = r,
         Ok(None) => {
-            let reason = "not a roller-screw rotor".into();
+            let reason = "not a roller-screw rotor or nut".into();
             let e = MechanismError::BadInput {
                 mechanism: "coupled part",
                 reason,

@@ -23,7 +23,7 @@ pub(crate) use step::{body_force, body_kinematics, force_of};
 
 use crate::check;
 use crate::spatial::Wrench;
-use crate::subsystem::rotor::RotorRate;
+use crate::subsystem::axial::AxialKind;
 use crate::{Data, DynamicsError, Model};
 use nalgebra::DVector;
 
@@ -106,7 +106,7 @@ pub(crate) fn first_forward(
 
 /// Kinematic half of the first forward recursion (Algorithm 2.2 without body forces): `C_i`,
 /// world poses, `g_i`, `v_i`, `b_i` and the mechanism loop caches of all bodies except the
-/// spin-invariant motor rotors (see [`crate::subsystem::rotor`]), whose kinematics the O(n)
+/// spin-invariant motor rotors (see [`crate::subsystem::axial`]), whose kinematics the O(n)
 /// solve does not need (of a roller-screw rotor only its spin rate is recorded);
 /// [`complete_rotor_kinematics`] adds them from the stored `q, v`.
 pub(crate) fn first_forward_kinematics(
@@ -121,10 +121,10 @@ pub(crate) fn first_forward_kinematics(
     data.fd_v.as_mut_slice().copy_from_slice(v.as_slice());
     let (q, v) = (q.as_slice(), v.as_slice());
     for i in 0..model.nbodies() {
-        match data.rotor_constant[i].as_ref().map(|rc| rc.rate) {
+        match data.axial_member[i].as_ref().map(|rc| rc.kind) {
             None => body_step(model, data, i, q, Some(v)),
-            Some(RotorRate::Screw) => coupled::screw_rotor_rate(&model.bodies[i], data, i, q, v),
-            Some(RotorRate::Geared) => {}
+            Some(AxialKind::Geared) => {}
+            Some(_) => coupled::axial_motion(&model.bodies[i], data, i, q, v),
         }
     }
 }
@@ -136,7 +136,7 @@ pub(crate) fn complete_rotor_kinematics(model: &Model, data: &mut Data) {
         std::mem::take(&mut data.fd_v),
     );
     for i in 0..model.nbodies() {
-        if data.rotor_constant[i].is_some() {
+        if data.axial_member[i].is_some() {
             body_step(model, data, i, q.as_slice(), Some(v.as_slice()));
         }
     }

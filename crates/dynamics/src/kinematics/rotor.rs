@@ -42,10 +42,11 @@ pub(super) fn rotor_kinematics(
     (x, rel, Motion::zero())
 }
 
-/// Per body: the constant frame of a motor rotor as a transform from the parent, identity for
-/// other bodies: for a Harmonic Drive rotor the placement times its initial pose (`A_pk'`,
-/// `r_0` of (3.2)), for an ankle roller-screw rotor the placement times its frame at spin angle
-/// zero (3.22). Either rotor spins about this frame's z axis.
+/// Per body: the constant frame of a part moving about or along a fixed axis, as a transform
+/// from the parent, identity for other bodies: for a Harmonic Drive rotor the placement times
+/// its initial pose (`A_pk'`, `r_0` of (3.2)), for an ankle roller-screw rotor or nut the
+/// placement times its frame at spin angle and travel zero (3.22), (3.29). The part spins about
+/// or moves along this frame's z axis.
 pub(crate) fn rotor_frames(model: &Model) -> Vec<SpatialTransform> {
     let frame = |b: &Body| match &b.joint_model {
         JointModel::Coupled {
@@ -59,8 +60,8 @@ pub(crate) fn rotor_frames(model: &Model) -> Vec<SpatialTransform> {
         JointModel::Coupled {
             mechanism: Mechanism::Ankle(part),
             ..
-        } => match part.rotor_frame() {
-            Some((rot, pos)) => part_transform(&b.placement_x, false, &rot, &pos),
+        } => match part.axis_frame() {
+            Some((rot, pos, _)) => part_transform(&b.placement_x, false, &rot, &pos),
             None => SpatialTransform::identity(),
         },
         _ => SpatialTransform::identity(),

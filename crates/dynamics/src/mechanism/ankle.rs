@@ -440,11 +440,16 @@ pub struct AnkleCoupling {
 }
 
 impl AnkleCoupling {
-    /// A rotor part's frame at spin angle zero relative to the shank (rotation: the screw
-    /// frame's axes as columns; origin: the screw top `T`); `None` for the nut and the rod.
-    /// The rotor spins about this frame's z axis by `N_screw l + offset` (3.22).
-    pub fn rotor_frame(&self) -> Option<(Matrix3<f64>, Vector3<f64>)> {
-        (self.part == AnklePart::Rotor).then_some((self.crank.frame, self.crank.act.screw_top))
+    /// Frame of a part that moves about or along the screw axis, at spin angle and travel
+    /// zero, relative to the shank (rotation: the screw frame's axes as columns; origin: the
+    /// screw top `T`), with the part: the rotor spins about its z axis by `N_screw l + offset`
+    /// (3.22), the nut moves along it by `l` (3.29). `None` for the rod.
+    pub fn axis_frame(&self) -> Option<(Matrix3<f64>, Vector3<f64>, AnklePart)> {
+        (self.part != AnklePart::Rod).then_some((
+            self.crank.frame,
+            self.crank.act.screw_top,
+            self.part,
+        ))
     }
 
     /// Foot ball centre `F_i` and nut ball centre `N_i` in the shank frame (loop-closure check).

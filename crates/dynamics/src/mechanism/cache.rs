@@ -48,7 +48,7 @@ impl<K: Copy, L: Copy> LoopSlots<K, L> {
 
     /// Slot of the newest entry whose key satisfies `hit` (read it with [`Self::value`]; no
     /// borrow is held, so a miss can store into `self`).
-    #[inline]
+    #[inline(always)]
     pub fn position(&self, hit: impl Fn(&K) -> bool) -> Option<usize> {
         let mut i = self.last % LOOP_SLOTS;
         for _ in 0..LOOP_SLOTS {

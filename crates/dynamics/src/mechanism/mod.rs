@@ -84,16 +84,17 @@ impl RelativeMotion {
     }
 }
 
-/// Spin rate of a motor rotor that turns about a fixed axis of its carrier at a
-/// configuration-dependent rate (a roller-screw rotor, (3.22), (3.32)-(3.33)): the spin speed
-/// is `row . qd_in`.
+/// Motion of a part about or along an axis fixed in its carrier at a configuration-dependent
+/// rate (a roller-screw rotor's spin or its nut's travel, (3.22), (3.29), (3.32)-(3.33)).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct SpinRate {
-    /// `d phi / d q_in` per input (unused entries zero).
+pub struct AxialMotion {
+    /// Spin angle or travel `x` along the axis.
+    pub travel: f64,
+    /// `d x / d q_in` per input (unused entries zero).
     pub row: [f64; MAX_COUPLED],
-    /// Spin speed `phi_dot = row . qd_in`.
+    /// `x_dot = row . qd_in`.
     pub speed: f64,
-    /// Spin acceleration at `qdd_in = 0`: `qd_in^T (d row / d q_in) qd_in`.
+    /// `x_ddot` at `qdd_in = 0`: `qd_in^T (d row / d q_in) qd_in`.
     pub bias: f64,
 }
 

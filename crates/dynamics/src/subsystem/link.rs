@@ -9,8 +9,8 @@
 //! `k_S = C^T f-hat + sum h + B_S p_S`. No member kinematics (2.77)-(2.79) are formed: the
 //! link's `C-hat`, `J-hat`, `b-hat` are its own `C`, `J`, `b`.
 
+use super::axial::AxialKind;
 use super::on::add_rigid_congruence;
-use super::rotor::RotorRate;
 use crate::model::joint::Joint;
 use crate::spatial::{plane, ArticulatedInertia, Force, JointAxis, Motion};
 use crate::{Data, DynamicsError, Model};
@@ -49,10 +49,10 @@ pub(crate) struct LinkRotors {
 /// has at most [`MAX_LINK_ROTORS`] rotors.
 pub(crate) fn link_rotor_subsystems(
     model: &Model,
-    rotor_constant: &[Option<super::rotor::RotorConstant>],
+    axial_member: &[Option<super::axial::AxialMember>],
 ) -> Vec<Option<LinkRotors>> {
     let one = |s: &super::Subsystem| {
-        let mut links = s.members.iter().filter(|&&j| rotor_constant[j].is_none());
+        let mut links = s.members.iter().filter(|&&j| axial_member[j].is_none());
         let (Some(&link), None) = (links.next(), links.next()) else {
             return None;
         };
@@ -60,8 +60,8 @@ pub(crate) fn link_rotor_subsystems(
         let (Joint::Revolute(axis) | Joint::Prismatic(axis)) = body.joint else {
             return None;
         };
-        let rotors = s.members.iter().filter_map(|&j| rotor_constant[j].as_ref());
-        let geared = rotors.clone().all(|rc| rc.rate == RotorRate::Geared);
+        let rotors = s.members.iter().filter_map(|&j| axial_member[j].as_ref());
+        let geared = rotors.clone().all(|rc| rc.kind == AxialKind::Geared);
         if s.v_set.len() != 1
             || body.parent != s.parent
             || rotors.count() > MAX_LINK_ROTORS
@@ -87,7 +87,7 @@ pub(crate) fn link_rotor_subsystems(
             sks: 0.0,
         };
         for &j in &s.members {
-            let Some(rc) = &rotor_constant[j] else {
+            let Some(rc) = &axial_member[j] else {
                 continue;
             };
             out.rotors[out.nrotors] = (j, rc.s);

@@ -7,12 +7,12 @@
 //! Member kinematics are expressed relative to the parent (2.77)-(2.79):
 //! `a_j = C-hat_j a_p + J-hat_j qddot_S + b-hat_j`.
 
+pub(crate) mod axial;
 mod chol;
 mod generate;
 pub(crate) mod link;
 pub(crate) mod on;
 pub(crate) mod rigid;
-pub(crate) mod rotor;
 
 pub(crate) use generate::generate;
 

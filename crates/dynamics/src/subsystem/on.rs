@@ -10,10 +10,10 @@
 //! `P_S = -M_S^-1 B_S`, `p_S = M_S^-1 (Q_S - f_S)`,
 //! `K_S = sum C-hat^T M-hat C-hat - B_S^T M_S^-1 B_S`, `k_S = B_S^T p_S + sum C-hat^T (M-hat b-hat - f-hat)`.
 
+use super::axial::AxialKind;
 use super::chol::{cholesky, solve};
 pub(crate) use super::rigid::add_rigid_congruence;
 use super::rigid::Axisymmetric;
-use super::rotor::RotorRate;
 use super::MAX_SUBSYSTEM_DOF as MAX;
 use crate::kinematics::joint_column;
 use crate::spatial::{ArticulatedInertia, Force, Motion, SpatialTransform};
@@ -60,7 +60,7 @@ fn hat_kinematics_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
     let sub = &model.subsystems[s];
     let n = dof::<N>(model, s);
     for (m, &j) in sub.members.iter().enumerate() {
-        if data.rotor_constant[j].is_some() {
+        if data.axial_member[j].is_some() {
             continue; // Spin-invariant rotor: works in the parent frame, no member kinematics.
         }
         let body = &model.bodies[j];
@@ -135,35 +135,37 @@ fn backward_n<const N: usize>(
     let mut fc = Force::zero();
     let kinds = sub.rigid_member.iter().zip(&sub.axisymmetric_member);
     for (m, (&j, (&rigid, &axisymmetric))) in sub.members.iter().zip(kinds).enumerate() {
-        if let Some(rc) = &data.rotor_constant[j] {
-            // Spin-invariant rotor: its C^T (M b - f) already in the parent frame (in `fbar`).
+        if let Some(rc) = &data.axial_member[j] {
+            // Axial member: its C^T (M b - f) already in the parent frame (in `fbar`).
             let h = data.fbar[j];
             let sh = rc.s.dot(&h);
-            match rc.rate {
-                // Constant B_S row and M_S diagonal entry, one column only.
-                RotorRate::Geared => {
+            match rc.kind {
+                // Constant K, B_S row and M_S diagonal entry, one column only.
+                AxialKind::Geared => {
                     let c = rc.column;
                     ms[c][c] += rc.sks;
                     bs[c] += rc.ks;
                     rhs[c] -= sh;
+                    kc += rc.congruence;
                 }
-                // Column c of J-hat is s rho_c (see `super::rotor`).
-                RotorRate::Screw => {
-                    let (row, cols) = (&data.spin_rate[j].row, &sub.columns[m]);
+                // Column c of J-hat is s rho_c (see `super::axial`).
+                AxialKind::Screw | AxialKind::Slider => {
+                    let (k, ks, sks) = rc.congruence_at(&rc.state(data, j).0);
+                    let (row, cols) = (&data.axial_motion[j].row, &sub.columns[m]);
                     let inputs = model.bodies[j].v_set.len().min(row.len());
-                    for k in 0..inputs {
-                        let c = cols[k];
-                        bs[c] += rc.ks * row[k];
-                        rhs[c] -= row[k] * sh;
-                        for l in 0..inputs {
-                            if cols[l] <= c {
-                                ms[c][cols[l]] += rc.sks * row[k] * row[l];
+                    for a in 0..inputs {
+                        let c = cols[a];
+                        bs[c] += ks * row[a];
+                        rhs[c] -= row[a] * sh;
+                        for b in 0..inputs {
+                            if cols[b] <= c {
+                                ms[c][cols[b]] += sks * row[a] * row[b];
                             }
                         }
                     }
+                    kc += k;
                 }
             }
-            kc += rc.congruence;
             fc += h;
             continue;
         }

@@ -7,7 +7,7 @@ use crate::model::coupling::Mechanism;
 use crate::model::JointModel;
 use crate::spatial::{Force, Wrench};
 use crate::subsystem;
-use crate::subsystem::rotor::{parent_frame_bias, RotorConstant};
+use crate::subsystem::axial::{parent_frame_bias, AxialMember};
 use crate::{Data, DynamicsError, Model};
 use nalgebra::{DVector, Vector3};
 
@@ -29,7 +29,7 @@ pub fn forward_pass_1(
 /// `f-bar_i = f_i` (2.56) written to `fbar` only,
 /// `M-bar_i = M_i` and the sub-system member kinematics; for a
 /// spin-invariant rotor `f-bar` holds its parent-frame `C^T (M b - f)` instead
-/// ([`crate::subsystem::rotor::parent_frame_bias`]).
+/// ([`crate::subsystem::axial::parent_frame_bias`]).
 pub(super) fn dynamic_first_pass(
     model: &Model,
     data: &mut Data,
@@ -39,7 +39,7 @@ pub(super) fn dynamic_first_pass(
     let bodies = model
         .bodies
         .iter()
-        .zip(&data.rotor_constant)
+        .zip(&data.axial_member)
         .zip(&data.mbar_needed);
     let state = data.gravity_body.iter().zip(&data.vel);
     let out = data.mbar.iter_mut().zip(data.fbar.iter_mut());
@@ -53,9 +53,9 @@ pub(super) fn dynamic_first_pass(
             }
         }
     }
-    for k in 0..data.fast_rotors.len() {
-        let i = data.fast_rotors[k];
-        if let Some(rc) = &data.rotor_constant[i] {
+    for k in 0..data.axial_members.len() {
+        let i = data.axial_members[k];
+        if let Some(rc) = &data.axial_member[i] {
             data.fbar[i] = rotor_bias(model, data, i, rc, fext)?;
         }
     }
@@ -74,7 +74,7 @@ fn rotor_bias(
     model: &Model,
     data: &Data,
     i: usize,
-    rc: &RotorConstant,
+    rc: &AxialMember,
     fext: Option<&[Wrench]>,
 ) -> Result<Force, DynamicsError> {
     let body = &model.bodies[i];
@@ -82,7 +82,7 @@ fn rotor_bias(
         Some(p) => (data.vel[p].ang, data.gravity_body[p]),
         None => (Vector3::zeros(), model.gravity),
     };
-    let mut h = parent_frame_bias(rc, &w, &g, rc.speed(data, i));
+    let mut h = parent_frame_bias(rc, &w, &g, rc.state(data, i));
     let Some(f) = fext.map(|f| f[i]).filter(|f| *f != Wrench::zero()) else {
         return Ok(h);
     };

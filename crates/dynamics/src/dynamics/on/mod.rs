@@ -12,7 +12,7 @@
 //! dispatched by joint type with one `match` per body, sub-systems (2.6-2.8) by
 //! [`crate::subsystem`]'s branches, so geared rotors and coupled parts are supported.
 //! Spin-invariant Harmonic Drive rotors enter in their parent's frame without kinematics
-//! (`subsystem::rotor`), and one-DoF sub-systems of one link plus such rotors take the
+//! (`subsystem::axial`), and one-DoF sub-systems of one link plus such rotors take the
 //! one-DoF body step with constant rotor terms (`subsystem::link`).
 //!
 //! Files: [`first`] (body forces, rotor bias), [`backward`] (Algorithm 2.3), [`forward`]

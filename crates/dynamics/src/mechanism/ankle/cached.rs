@@ -5,7 +5,7 @@ use super::closure::{trig, Closure};
 use super::{AnkleCoupling, AnklePart, SliderCrank, NAME};
 use crate::mechanism::cache::LoopSlots;
 use crate::mechanism::jet::input_arrays;
-use crate::mechanism::{CoupledMotion, MechanismError, RelativeMotion, SpinRate};
+use crate::mechanism::{AxialMotion, CoupledMotion, MechanismError, RelativeMotion};
 
 /// Closed slider-crank loops of the last kinematics pass, keyed by crank identity and exact
 /// inputs (see [`crate::mechanism::cache`]): the three parts (nut, rotor, rod) of one actuator share one
@@ -85,20 +85,22 @@ impl AnkleCoupling {
         Ok(self.crank.part_motion(self.part, closure))
     }
 
-    /// Spin rate of a rotor part (3.22), (3.32)-(3.33) at `(q_in, qd_in)`, from `cache` like
-    /// [`Self::relative_cached`]; `None` for the nut and the rod.
-    pub(crate) fn spin_rate_cached(
+    /// Spin of a rotor part (3.22) or travel of a nut (3.29) with their rates (3.32)-(3.33) at
+    /// `(q_in, qd_in)`, from `cache` like [`Self::relative_cached`]; `None` for the rod.
+    pub(crate) fn axial_motion_cached(
         &self,
         q_in: &[f64],
         qd_in: &[f64],
         cache: &mut Option<AnkleLoop>,
-    ) -> Result<Option<SpinRate>, MechanismError> {
-        if self.part != AnklePart::Rotor {
-            return Ok(None);
-        }
+    ) -> Result<Option<AxialMotion>, MechanismError> {
+        let (n, offset) = match self.part {
+            AnklePart::Rotor => (self.crank.ratio, self.crank.act.motor_offset),
+            AnklePart::Nut => (1.0, 0.0),
+            AnklePart::Rod => return Ok(None),
+        };
         let c = self.closure_cached(q_in, qd_in, cache)?;
-        let n = self.crank.ratio;
-        Ok(Some(SpinRate {
+        Ok(Some(AxialMotion {
+            travel: n * c.l + offset,
             row: [n * c.l_q[0], n * c.l_q[1], 0.0],
             speed: n * c.l_dot,
             bias: n * c.l_acc,

@@ -1,12 +1,14 @@
-//! Spin-invariant congruence of Harmonic Drive rotors for the O(n) backward pass (2.76).
+//! Axial members: rigid leaves of a sub-system that spin about or slide along an axis fixed in
+//! the sub-system's parent (motor rotors and roller-screw nuts), treated in the parent's frame
+//! by the O(n) passes without any kinematics of their own (2.76).
 //!
-//! A rotor (3.1)-(3.2) attached directly to its sub-system's parent has `C-hat = C`, a rotation
-//! by the spin angle about the z axis of a constant frame. When the rotor's inertia is
-//! axisymmetric about that axis (CoM on the axis, `I_xx = I_yy`, no products of inertia), its
-//! term `K = C^T M C` of (2.76) does not depend on the spin angle and is computed once per model.
-//! So are its contributions to `B_S` and `M_S`: with the rotor column `J = [0, 0, N, 0, 0, 0]`
-//! (3.1) and its parent-frame image `s = C^-1 J` (the spin axis, constant), `C^T M J = K s` and
-//! `J^T M J = s^T K s`.
+//! A Harmonic Drive rotor (3.1)-(3.2) attached directly to its sub-system's parent has
+//! `C-hat = C`, a rotation by the spin angle about the z axis of a constant frame. When the
+//! rotor's inertia is axisymmetric about that axis (CoM on the axis, `I_xx = I_yy`, no products
+//! of inertia), its term `K = C^T M C` of (2.76) does not depend on the spin angle and is
+//! computed once per model. So are its contributions to `B_S` and `M_S`: with the rotor column
+//! `J = [0, 0, N, 0, 0, 0]` (3.1) and its parent-frame image `s = C^-1 J` (the spin axis,
+//! constant), `C^T M J = K s` and `J^T M J = s^T K s`.
 //!
 //! Such a rotor's CoM is fixed in the parent frame and its inertia there is constant, so the
 //! O(n) forward dynamics need no rotor kinematics at all (no spin angle, no rotor pose): its
@@ -19,131 +21,177 @@
 //! but at the configuration-dependent rate `phi_dot = rho(q) qdot` with `rho = N_screw dl/dq`
 //! (3.32). With the unit spin twist `s`, their column `c` of `J-hat` is `s rho_c`, so they add
 //! `rho_r rho_c s^T K s` to `M_S`, `rho_c K s` to `B_S`, and the spin acceleration at zero
-//! `qddot`, `sigma = qdot^T (d rho / d q) qdot` (3.33), adds `K s sigma` to their bias force. The
-//! kinematics pass records `rho`, `phi_dot` and `sigma` from the loop the drive's nut and rod
-//! close anyway ([`RotorRate::Screw`]).
+//! `qddot`, `sigma = qdot^T (d rho / d q) qdot` (3.33), adds `K s sigma` to their bias force
+//! ([`AxialKind::Screw`]). Their nuts (3.29) keep the screw frame's orientation and slide along
+//! its axis `e` by the travel `l`: with `s = [0; e]` and `rho = dl/dq` the same sums hold, with
+//! `K` the nut's rigid inertia at its current CoM `c_0 + e l` (no rotation: cheaper than a
+//! congruence) and `s^T K s = m` ([`AxialKind::Slider`]). The kinematics pass records the spin or
+//! travel, `rho`, its rate and `sigma` from the loop the drive's rod closes anyway.
 
 use super::on::add_rigid_congruence;
+use crate::mechanism::ankle::AnklePart;
 use crate::mechanism::harmonic_drive::HarmonicDriveRotor;
 use crate::model::coupling::Mechanism;
 use crate::model::JointModel;
 use crate::spatial::{
-    sym_congruence, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform,
+    skew, sym_congruence, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform,
 };
 use crate::Model;
 use nalgebra::{Matrix3, Vector3};
 
-/// How a spin-invariant rotor's spin follows the coordinates.
+/// How an axial member moves about or along its axis fixed in the sub-system's parent.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum RotorRate {
-    /// Harmonic Drive rotor (3.1): constant ratio `N` on one coordinate, folded into `s`.
+pub(crate) enum AxialKind {
+    /// Harmonic Drive rotor (3.1): spins at a constant ratio `N` of one coordinate, folded
+    /// into `s`.
     Geared,
-    /// Ankle roller-screw rotor (3.22), (3.32)-(3.33): `s` is the unit spin twist, the
-    /// configuration-dependent rate of each kinematics pass is in `Data::spin_rate`.
+    /// Ankle roller-screw rotor (3.22), (3.32)-(3.33): spins about the unit twist `s` at the
+    /// configuration-dependent rate of each kinematics pass (`Data::axial_motion`).
     Screw,
+    /// Ankle roller-screw nut (3.29), (3.32)-(3.33): translates along the unit axis `s.lin`
+    /// with a fixed orientation, travel and rate from each kinematics pass.
+    Slider,
 }
 
-/// Spin-invariant quantities of one rotor member of a sub-system (see the module doc).
+/// Parent-frame data of one axial member of a sub-system (see the module doc).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct RotorConstant {
-    /// How the spin follows the coordinates (and what `s` is per unit of).
-    pub(crate) rate: RotorRate,
-    /// `K = C^T M C` in the sub-system parent's frame.
+pub(crate) struct AxialMember {
+    /// How the member follows the coordinates (and what `s` is per unit of).
+    pub(crate) kind: AxialKind,
+    /// `K = C^T M C` in the sub-system parent's frame (rotors; a slider's varies with its
+    /// travel, [`Self::congruence_at`]).
     pub(crate) congruence: ArticulatedInertia,
-    /// Column of the rotor's coordinate within the sub-system.
+    /// Column of the rotor's coordinate within the sub-system ([`AxialKind::Geared`]).
     pub(crate) column: usize,
-    /// `C^T M J = K s`, the rotor's contribution to its row of `B_S`.
+    /// `C^T M J = K s`, the contribution to the member's row of `B_S` (rotors).
     pub(crate) ks: Force,
-    /// `J^T M J = s^T K s`, the rotor's contribution to the diagonal of `M_S`.
+    /// `J^T M J = s^T K s`, the contribution to the diagonal of `M_S`.
     pub(crate) sks: f64,
-    /// `s = C^-1 J`: the rotor column in the parent frame (`s.ang = N` times the spin axis;
-    /// the unit spin axis for [`RotorRate::Screw`]).
+    /// `s = C^-1 J`: the member's column in the parent frame (`s.ang = N` times the spin axis
+    /// for [`AxialKind::Geared`], the unit spin twist or unit translation otherwise).
     pub(crate) s: Motion,
-    /// Rotor mass `m`.
+    /// Mass `m`.
     pub(crate) mass: f64,
-    /// Rotor CoM in parent coordinates (on the spin axis, so constant).
+    /// CoM in parent coordinates (a slider's at zero travel).
     pub(crate) com: Vector3<f64>,
-    /// Rotational inertia about the CoM in parent axes (constant by axisymmetry).
+    /// Rotational inertia about the CoM in parent axes (constant).
     pub(crate) inertia_com: Matrix3<f64>,
-    /// Velocity index of the driving coordinate (the first input's for [`RotorRate::Screw`]).
+    /// Velocity index of the driving coordinate (the first input's for a coupled part).
     pub(crate) v_index: usize,
 }
 
-impl RotorConstant {
-    /// Spin speed per unit of `s` and spin acceleration at zero `qddot` of rotor `i` at the
-    /// state of the last forward-dynamics kinematics pass on `data`.
+impl AxialMember {
+    /// CoM (parent coordinates), speed per unit of `s` and acceleration at zero `qddot` of
+    /// member `i` at the state of the last forward-dynamics kinematics pass on `data`.
     #[inline(always)]
-    pub(crate) fn speed(&self, data: &crate::Data, i: usize) -> (f64, f64) {
-        match self.rate {
-            RotorRate::Geared => (data.fd_v[self.v_index], 0.0),
-            RotorRate::Screw => (data.spin_rate[i].speed, data.spin_rate[i].bias),
+    pub(crate) fn state(&self, data: &crate::Data, i: usize) -> (Vector3<f64>, f64, f64) {
+        let m = &data.axial_motion[i];
+        match self.kind {
+            AxialKind::Geared => (self.com, data.fd_v[self.v_index], 0.0),
+            AxialKind::Screw => (self.com, m.speed, m.bias),
+            AxialKind::Slider => (self.com + self.s.lin * m.travel, m.speed, m.bias),
         }
+    }
+
+    /// `K`, `K s` and `s^T K s` with the CoM at `c` (from [`Self::state`]).
+    #[inline(always)]
+    pub(crate) fn congruence_at(&self, c: &Vector3<f64>) -> (ArticulatedInertia, Force, f64) {
+        if self.kind != AxialKind::Slider {
+            return (self.congruence, self.ks, self.sks);
+        }
+        // The rigid inertia (m, c, I_c) about the parent origin, (2.22).
+        let h = c * self.mass;
+        let k = ArticulatedInertia {
+            ang: self.inertia_com + Matrix3::identity() * c.dot(&h) - h * c.transpose(),
+            cross: skew(&h),
+            lin: Matrix3::identity() * self.mass,
+        };
+        let e = &self.s.lin;
+        (k, Force::new(h.cross(e), e * self.mass), self.sks)
     }
 }
 
-/// `C^T (M b - f_g + h)` of a spin-invariant rotor in its parent's frame (moment about the
-/// parent origin): the wrench that gives the rotor its motion at zero parent acceleration and
-/// zero `qddot` against gravity, (2.56) with (2.37) moved to the parent. With the parent's
-/// angular velocity `w_p` and gravity `g_p` (parent axes), the spin speed `qd` and spin
-/// acceleration `sigma` (per unit of `s`; `sigma = 0` for a constant ratio) and the rotor rate
-/// `w_R = w_p + s.ang qd`: the CoM `c` is fixed in the parent, so `F = m (w_p x (w_p x c) - g_p)`;
-/// the inertia `I_c` is constant in parent axes, so `dL/dt = I_c s.ang sigma + w_p x (I_c w_R)`
-/// (the derivative of `L = I_c w_R` in the parent's rotating axes); the moment about the parent
-/// origin adds `c x F`.
+/// `C^T (M b - f_g + h)` of an axial member in its parent's frame (moment about the parent
+/// origin): the wrench that gives it its motion at zero parent acceleration and zero `qddot`
+/// against gravity, (2.56) with (2.37) moved to the parent. With the parent's angular velocity
+/// `w_p` and gravity `g_p` (parent axes), the CoM `c`, speed `qd` and acceleration `sigma` from
+/// [`AxialMember::state`]: a rotor's CoM is fixed in the parent and its rate is
+/// `w_R = w_p + s.ang qd`, so `F = m (w_p x (w_p x c) - g_p)`, and its inertia `I_c` is constant
+/// in parent axes, so `dL/dt = I_c s.ang sigma + w_p x (I_c w_R)` (the derivative of
+/// `L = I_c w_R` in the parent's rotating axes); a slider moving along `e = s.lin` adds the
+/// Coriolis and travel terms `m (2 w_p x e qd + e sigma)` to `F` and turns with the parent
+/// (`w_R = w_p`). The moment about the parent origin adds `c x F`.
 #[inline]
 pub(crate) fn parent_frame_bias(
-    rc: &RotorConstant,
+    rc: &AxialMember,
     w_p: &Vector3<f64>,
     g_p: &Vector3<f64>,
-    (qd, sigma): (f64, f64),
+    (c, qd, sigma): (Vector3<f64>, f64, f64),
 ) -> Force {
     let w = w_p + rc.s.ang * qd;
-    let f = (w_p.cross(&w_p.cross(&rc.com)) - g_p) * rc.mass;
-    let mut n = w_p.cross(&(rc.inertia_com * w)) + rc.com.cross(&f);
-    if rc.rate == RotorRate::Screw {
+    let mut a = w_p.cross(&w_p.cross(&c)) - g_p;
+    if rc.kind == AxialKind::Slider {
+        let e = &rc.s.lin;
+        a += w_p.cross(e) * (2.0 * qd) + e * sigma;
+    }
+    let f = a * rc.mass;
+    let mut n = w_p.cross(&(rc.inertia_com * w)) + c.cross(&f);
+    if rc.kind == AxialKind::Screw {
         n += rc.inertia_com * (rc.s.ang * sigma);
     }
     Force::new(n, f)
 }
 
-/// Per body: the constants of a spin-invariant rotor member (see the module doc), `None` for
-/// every other body. `frames` are the rotors' constant frames (spin angle zero).
-pub(crate) fn constant_congruences(
+/// Per body: the parent-frame data of an axial member (see the module doc), `None` for every
+/// other body. `frames` are the members' constant frames (spin angle and travel zero).
+pub(crate) fn axial_members(
     model: &Model,
     frames: &[SpatialTransform],
-) -> Vec<Option<RotorConstant>> {
+) -> Vec<Option<AxialMember>> {
     let mut out = vec![None; model.nbodies()];
     for sub in &model.subsystems {
         for (mi, &j) in sub.members.iter().enumerate() {
             let body = &model.bodies[j];
-            let (column, rate) = match &body.joint_model {
+            let unit = |lin: bool| match lin {
+                false => Motion::new(Vector3::z(), Vector3::zeros()),
+                true => Motion::new(Vector3::zeros(), Vector3::z()),
+            };
+            let (column, kind) = match &body.joint_model {
                 JointModel::Coupled {
                     mechanism: Mechanism::HarmonicDrive(rotor),
                     ..
-                } if body.v_set.len() == 1 => (rotor_column(rotor), RotorRate::Geared),
+                } if body.v_set.len() == 1 => (rotor_column(rotor), AxialKind::Geared),
                 JointModel::Coupled {
                     mechanism: Mechanism::Ankle(part),
                     ..
-                } if part.rotor_frame().is_some() => (
-                    Motion::new(Vector3::z(), Vector3::zeros()),
-                    RotorRate::Screw,
-                ),
+                } => match part.axis_frame() {
+                    Some((_, _, AnklePart::Rotor)) => (unit(false), AxialKind::Screw),
+                    Some((_, _, _)) => (unit(true), AxialKind::Slider),
+                    None => continue,
+                },
                 _ => continue,
             };
             let leaf = model.bodies.iter().all(|b| b.parent != Some(j));
             if !(leaf && sub.rigid_member[mi] && body.parent == sub.parent) {
                 continue;
             }
-            out[j] = spin_invariant(&body.inertia, &frames[j]).map(|congruence| {
-                let s = frames[j].inv_apply_motion(&column);
+            let frame = &frames[j];
+            let congruence = match kind {
+                AxialKind::Slider => Some(ArticulatedInertia::zero()),
+                _ => spin_invariant(&body.inertia, frame),
+            };
+            out[j] = congruence.map(|congruence| {
+                let s = frame.inv_apply_motion(&column);
                 let ks = congruence.apply(&s);
-                let frame = &frames[j];
-                RotorConstant {
-                    rate,
+                AxialMember {
+                    kind,
                     congruence,
                     column: sub.columns[mi][0],
                     ks,
-                    sks: s.dot(&ks),
+                    sks: match kind {
+                        AxialKind::Slider => body.inertia.mass(),
+                        _ => s.dot(&ks),
+                    },
                     s,
                     mass: body.inertia.mass(),
                     com: frame.rot.tr_mul(&body.inertia.com()) + frame.trans,
@@ -222,18 +270,23 @@ mod tests {
         assert!(spin_invariant(&flat, &frame).is_none());
     }
 
-    /// Ankle roller-screw rotors take the fast path (rate from the loop) when axisymmetric
-    /// about the screw axis, the general one otherwise; nuts and rods never do.
+    /// Ankle roller-screw rotors take the axial path (rate from the loop) when axisymmetric
+    /// about the screw axis, the general one otherwise; nuts always do (sliders), rods never.
     #[test]
-    fn ankle_screw_rotors_qualify_when_axisymmetric() {
+    fn ankle_screw_parts_qualify() {
         use crate::mechanism::ankle::AnklePart;
         for off_axis in [false, true] {
             let (model, parts) = ankle_leg(off_axis);
             let data = crate::Data::new(&model);
             for &(act, part, j) in &parts {
-                let rate = data.rotor_constant[j].map(|rc| rc.rate);
-                let fast = part == AnklePart::Rotor && !(off_axis && act == 1);
-                assert_eq!(rate, fast.then_some(RotorRate::Screw), "{part:?} {act}");
+                let kind = data.axial_member[j].map(|rc| rc.kind);
+                let expected = match part {
+                    AnklePart::Rotor if off_axis && act == 1 => None,
+                    AnklePart::Rotor => Some(AxialKind::Screw),
+                    AnklePart::Nut => Some(AxialKind::Slider),
+                    AnklePart::Rod => None,
+                };
+                assert_eq!(kind, expected, "{part:?} {act}");
             }
         }
     }
