@@ -1,9 +1,11 @@
 //! Dense Cholesky factorisation and solve of the small sub-system mass matrices `M_S` (2.76),
-//! kept in fixed `S x S` arrays of which the leading `n x n` block is used.
+//! kept in fixed `S x S` arrays of which the leading `n x n` block is used. The factor's
+//! diagonal is stored inverted (`1 / L_cc`): one division per column, products elsewhere.
 
 use crate::DynamicsError;
 
-/// In-place Cholesky `M_S = L L^T` of the leading `n x n` block (lower triangle used).
+/// In-place Cholesky `M_S = L L^T` of the leading `n x n` block (lower triangle used; the
+/// diagonal holds `1 / L_cc`).
 #[inline(always)]
 pub(crate) fn cholesky<const N: usize>(
     m: &mut [[f64; N]; N],
@@ -19,11 +21,11 @@ pub(crate) fn cholesky<const N: usize>(
                 pivot: d,
             });
         }
-        let l = d.sqrt();
-        m[c][c] = l;
+        let inv = 1.0 / d.sqrt();
+        m[c][c] = inv;
         for r in c + 1..n {
             let dot: f64 = m[r][..c].iter().zip(&m[c][..c]).map(|(a, b)| a * b).sum();
-            m[r][c] = (m[r][c] - dot) / l;
+            m[r][c] = (m[r][c] - dot) * inv;
         }
     }
     Ok(())
@@ -37,12 +39,12 @@ pub(crate) fn solve<const S: usize>(l: &[[f64; S]; S], n: usize, b: &mut [f64]) 
         for k in 0..c {
             b[c] -= l[c][k] * b[k];
         }
-        b[c] /= l[c][c];
+        b[c] *= l[c][c];
     }
     for c in (0..n).rev() {
         for k in c + 1..n {
             b[c] -= l[k][c] * b[k];
         }
-        b[c] /= l[c][c];
+        b[c] *= l[c][c];
     }
 }

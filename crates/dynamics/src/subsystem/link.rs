@@ -133,8 +133,8 @@ pub(crate) fn backward(
     }
     let x = &data.x[link];
     let b = x.tr_apply_force(&u) + lr.ks;
-    let p = (rhs - ax.dot_force(&hat_f)) / d;
     let dinv = 1.0 / d;
+    let p = (rhs - ax.dot_force(&hat_f)) * dinv;
     data.u[link] = b;
     data.dinv[link] = dinv;
     data.p1[link] = p;

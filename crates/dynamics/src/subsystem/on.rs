@@ -216,7 +216,7 @@ fn backward_n<const N: usize>(
             let wk = w[k];
             w[c] -= wk * ms[c][k];
         }
-        w[c] = w[c] * (1.0 / ms[c][c]);
+        w[c] = w[c] * ms[c][c]; // The factor's diagonal is stored inverted.
         kc.sub_outer(&w[c], 1.0);
     }
     for (b, r) in bs.iter().zip(&rhs).take(n) {

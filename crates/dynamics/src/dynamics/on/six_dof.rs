@@ -18,12 +18,11 @@ pub(super) fn six_dof_backward(
     tau: &DVector<f64>,
     (propagate, free): (bool, bool),
 ) -> Result<Force, DynamicsError> {
-    let mbar = data.mbar[i].to_matrix();
     let j = data.jacobian6[i];
     let (u, d) = if free {
         free_joint_products(&data.mbar[i])
     } else {
-        let u = mbar * j;
+        let u = data.mbar[i].to_matrix() * j;
         let d = j.tr_mul(&u);
         (u, d)
     };
@@ -46,6 +45,7 @@ pub(super) fn six_dof_backward(
         let x = cholesky6_solve(&l, pi.column(c).into_owned());
         pi.set_column(c, &x);
     }
+    let mbar = data.mbar[i].to_matrix();
     let (b, fbar) = (data.bias_acc[i].to_vector(), data.fbar[i].to_vector());
     let k = mbar * (b + j * p) - fbar;
     let ia: Matrix6<f64> = mbar - u * pi;
@@ -54,11 +54,12 @@ pub(super) fn six_dof_backward(
     Ok(Force::from_vector(&k))
 }
 
-/// Lower Cholesky factor `L` of the joint-space inertia `D = L L^T` (2.67), every pivot
-/// checked against its diagonal entry ([`check_pivot`], index `vi + c`): fixed 6x6 loops,
-/// no generic factorisation object.
-fn cholesky6(d: &Matrix6<f64>, vi: usize) -> Result<Matrix6<f64>, DynamicsError> {
-    let mut l = Matrix6::zeros();
+/// Lower Cholesky factor `L` of the joint-space inertia `D = L L^T` (2.67) with the
+/// reciprocals of its diagonal (one division per column instead of one per entry and solve
+/// step), every pivot checked against its diagonal entry ([`check_pivot`], index `vi + c`):
+/// fixed 6x6 loops, no generic factorisation object.
+fn cholesky6(d: &Matrix6<f64>, vi: usize) -> Result<(Matrix6<f64>, [f64; 6]), DynamicsError> {
+    let (mut l, mut inv) = (Matrix6::zeros(), [0.0; 6]);
     for j in 0..6 {
         let mut pivot = d[(j, j)];
         for k in 0..j {
@@ -67,30 +68,31 @@ fn cholesky6(d: &Matrix6<f64>, vi: usize) -> Result<Matrix6<f64>, DynamicsError>
         check_pivot(vi + j, pivot, d[(j, j)])?;
         let ljj = pivot.sqrt();
         l[(j, j)] = ljj;
+        inv[j] = 1.0 / ljj;
         for i in j + 1..6 {
             let mut s = d[(i, j)];
             for k in 0..j {
                 s -= l[(i, k)] * l[(j, k)];
             }
-            l[(i, j)] = s / ljj;
+            l[(i, j)] = s * inv[j];
         }
     }
-    Ok(l)
+    Ok((l, inv))
 }
 
 /// `D^-1 b` from the factor of [`cholesky6`]: `L y = b`, then `L^T x = y`.
-fn cholesky6_solve(l: &Matrix6<f64>, mut b: Vector6<f64>) -> Vector6<f64> {
+fn cholesky6_solve((l, inv): &(Matrix6<f64>, [f64; 6]), mut b: Vector6<f64>) -> Vector6<f64> {
     for i in 0..6 {
         for k in 0..i {
             b[i] -= l[(i, k)] * b[k];
         }
-        b[i] /= l[(i, i)];
+        b[i] *= inv[i];
     }
     for i in (0..6).rev() {
         for k in i + 1..6 {
             b[i] -= l[(k, i)] * b[k];
         }
-        b[i] /= l[(i, i)];
+        b[i] *= inv[i];
     }
     b
 }
