@@ -149,11 +149,15 @@ mod tests {
     fn cholesky6_matches_nalgebra() {
         let a = Matrix6::from_fn(|i, j| ((2 * i + 5 * j) % 7) as f64 * 0.4 - 1.1);
         let d = a * a.transpose() + Matrix6::identity() * 0.3;
-        let l = cholesky6(&d, 0).expect("positive definite");
+        let factor = cholesky6(&d, 0).expect("positive definite");
+        let l = factor.0;
         assert!((l * l.transpose() - d).amax() < 1e-13 * d.amax());
+        for (c, inv) in factor.1.iter().enumerate() {
+            assert!((inv * l[(c, c)] - 1.0).abs() < 1e-15);
+        }
         let b = Vector6::new(0.3, -1.2, 0.7, 2.1, -0.4, 0.05);
         let expect = d.cholesky().expect("spd").solve(&b);
-        assert!((cholesky6_solve(&l, b) - expect).amax() < 1e-12 * expect.amax());
+        assert!((cholesky6_solve(&factor, b) - expect).amax() < 1e-12 * expect.amax());
         let mut singular = d;
         singular.set_row(4, &d.row(1));
         singular.set_column(4, &d.column(1));
