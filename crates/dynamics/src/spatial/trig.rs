@@ -33,7 +33,7 @@ pub fn sin_cos_into(x: &[f64], out: &mut [[f64; 2]]) {
         *o = reduced(x);
     }
     for (o, &x) in out.iter_mut().zip(x) {
-        if !(x.abs() <= REDUCTION_LIMIT) {
+        if x.is_nan() || x.abs() > REDUCTION_LIMIT {
             let (s, c) = x.sin_cos();
             *o = [s, c];
         }
