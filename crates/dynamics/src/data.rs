@@ -6,7 +6,7 @@ use crate::mechanism::{AxialMotion, MechanismError};
 use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::model::{Body, JointModel};
-use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, SpatialTransform, SubspaceKind};
+use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, SpatialTransform};
 use crate::subsystem::axial::{axial_members, AxialMember};
 use crate::subsystem::link::{link_rotor_subsystems, LinkRotors};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
@@ -103,15 +103,6 @@ pub struct Data {
     /// Coordinate axis (0, 1, 2) of a revolute joint whose placement is a pure translation, so
     /// that `C_i` rotates about that axis ([`ArticulatedInertia::add_tr_transform_axis_to`]), per body.
     pub(crate) plane_axis: Vec<Option<usize>>,
-    /// Revolute bodies whose velocity step takes the written-out plane path of the kinematics
-    /// (`crate::kinematics::plane`): `(body, q index, axis scale)`, ascending.
-    pub(crate) plane_joints: Vec<(usize, usize, f64)>,
-    /// Per body: its slot in `plane_joints` (unused for other bodies).
-    pub(crate) plane_slot: Vec<usize>,
-    /// Joint angles of `plane_joints` gathered by a kinematics pass (scratch).
-    pub(crate) plane_angle: Vec<f64>,
-    /// `[sin, cos]` of `plane_angle` (scratch, taken out of `Data` during a pass).
-    pub(crate) plane_trig: Vec<[f64; 2]>,
     /// Per body: the joint placement is the identity, so a coupled part's `C` is its relative
     /// pose alone (no placement products in the kinematics).
     pub(crate) unplaced: Vec<bool>,
@@ -190,21 +181,6 @@ fn plane_axis(body: &Body) -> Option<usize> {
     }
 }
 
-/// The bodies of [`Data::plane_joints`]: revolute (or geared-rotor) joints about a coordinate
-/// axis of an unrotated placement, with a parent listed before them (the conditions of the
-/// plane path in `crate::kinematics::step::body_step`).
-fn plane_joints(model: &Model) -> Vec<(usize, usize, f64)> {
-    let plane = |(i, b): (usize, &Body)| match (&b.joint, b.parent, plane_axis(b)) {
-        (Joint::Revolute(ax) | Joint::Rotor(ax), Some(p), Some(_))
-            if ax.kind == SubspaceKind::Angular && p < i =>
-        {
-            Some((i, b.q_index, ax.scale))
-        }
-        _ => None,
-    };
-    model.bodies.iter().enumerate().filter_map(plane).collect()
-}
-
 impl Data {
     /// Workspace sized for `model`.
     pub fn new(model: &Model) -> Self {
@@ -230,11 +206,6 @@ impl Data {
         let rotor_frames = crate::kinematics::rotor_frames(model);
         let axial_member = axial_members(model, &rotor_frames);
         let massless_leaf = massless_leaves(model);
-        let plane_joints = plane_joints(model);
-        let mut plane_slot = vec![usize::MAX; n];
-        for (k, &(i, _, _)) in plane_joints.iter().enumerate() {
-            plane_slot[i] = k;
-        }
         let mut col_offset = vec![0; n + 1];
         for (i, b) in model.bodies.iter().enumerate() {
             col_offset[i + 1] = col_offset[i] + b.v_set.len();
@@ -276,10 +247,6 @@ impl Data {
             axial_member,
             rotor_frame: rotor_frames,
             plane_axis: model.bodies.iter().map(plane_axis).collect(),
-            plane_angle: vec![0.0; plane_joints.len()],
-            plane_trig: vec![[0.0; 2]; plane_joints.len()],
-            plane_slot,
-            plane_joints,
             unplaced: crate::kinematics::identity_placements(model),
             ankle_loop: None,
             knee_loop: None,

@@ -22,7 +22,6 @@ use step::body_step;
 pub(crate) use step::{body_force, body_kinematics, force_of};
 
 use crate::check;
-use crate::spatial::sin_cos_into;
 use crate::spatial::Wrench;
 use crate::subsystem::axial::AxialKind;
 use crate::{Data, DynamicsError, Model};
@@ -44,11 +43,9 @@ pub fn forward_kinematics(
     check::vector("v", v, model.nv())?;
     check::vector("a", a, model.nv())?;
     let (q, v) = (q.as_slice(), v.as_slice());
-    let trig = plane_trig(data, q);
     for i in 0..model.nbodies() {
-        body_step(model, data, i, q, Some(v), Some(&trig));
+        body_step(model, data, i, q, Some(v));
     }
-    data.plane_trig = trig;
     take_fault(data)?;
     propagate_accelerations(model, data, Some(a));
     Ok(())
@@ -63,7 +60,7 @@ pub fn update_placements(
     check::data(model, data)?;
     check::configuration(model, q)?;
     for i in 0..model.nbodies() {
-        body_step(model, data, i, q.as_slice(), None, None);
+        body_step(model, data, i, q.as_slice(), None);
     }
     take_fault(data)
 }
@@ -101,25 +98,10 @@ pub(crate) fn first_forward(
     fext: Option<&[Wrench]>,
 ) {
     let (q, v) = (q.as_slice(), v.as_slice());
-    let trig = plane_trig(data, q);
     for i in 0..model.nbodies() {
-        body_step(model, data, i, q, Some(v), Some(&trig));
+        body_step(model, data, i, q, Some(v));
         body_force(model, data, i, fext);
     }
-    data.plane_trig = trig;
-}
-
-/// `[sin, cos]` of the plane-path joint angles at `q` in one vectorised batch
-/// ([`crate::spatial::sin_cos_into`], slots of `Data::plane_joints`): taken out of `data`
-/// for the pass (which hands it to [`body_step`] and puts it back), so the sines and cosines
-/// are off the pass's chain of dependent body steps.
-fn plane_trig(data: &mut Data, q: &[f64]) -> Vec<[f64; 2]> {
-    let mut trig = std::mem::take(&mut data.plane_trig);
-    for (a, &(_, qi, scale)) in data.plane_angle.iter_mut().zip(&data.plane_joints) {
-        *a = q[qi] * scale;
-    }
-    sin_cos_into(&data.plane_angle, &mut trig);
-    trig
 }
 
 /// Kinematic half of the first forward recursion (Algorithm 2.2 without body forces): `C_i`,
@@ -138,15 +120,13 @@ pub(crate) fn first_forward_kinematics(
     data.fd_q.as_mut_slice().copy_from_slice(q.as_slice());
     data.fd_v.as_mut_slice().copy_from_slice(v.as_slice());
     let (q, v) = (q.as_slice(), v.as_slice());
-    let trig = plane_trig(data, q);
     for i in 0..model.nbodies() {
         match data.axial_member[i].as_ref().map(|rc| rc.kind) {
-            None => body_step(model, data, i, q, Some(v), Some(&trig)),
+            None => body_step(model, data, i, q, Some(v)),
             Some(AxialKind::Geared) => {}
             Some(_) => coupled::axial_motion(&model.bodies[i], data, i, q, v),
         }
     }
-    data.plane_trig = trig;
 }
 
 /// Kinematics of the rotors skipped by [`first_forward_kinematics`], from its stored `q, v`.
@@ -157,7 +137,7 @@ pub(crate) fn complete_rotor_kinematics(model: &Model, data: &mut Data) {
     );
     for i in 0..model.nbodies() {
         if data.axial_member[i].is_some() {
-            body_step(model, data, i, q.as_slice(), Some(v.as_slice()), None);
+            body_step(model, data, i, q.as_slice(), Some(v.as_slice()));
         }
     }
     (data.fd_q, data.fd_v) = (q, v);

@@ -4,7 +4,7 @@
 //! `Jdot_i qdot_i = 0`, so the products of the general step are written out with these zeros
 //! dropped. Same results as the general step ([`super::step`]) up to the sign of zeros.
 
-use crate::spatial::{JointAxis, Motion, SpatialTransform};
+use crate::spatial::{sin_cos, JointAxis, Motion, SpatialTransform};
 use crate::{Data, Model};
 use nalgebra::{Matrix3, Vector3};
 
@@ -19,7 +19,7 @@ fn rot_mul<const K: usize>(s: f64, c: f64, v: &Vector3<f64>) -> Vector3<f64> {
 }
 
 /// `C_i`, world pose, `g_i`, `v_i` (2.33) and `b_i` (2.37) of body `i` with parent `p`, joint
-/// axis `ax` (angular, about `e_K`) at the angle with sine and cosine `[s, c]` and rate `qd`.
+/// axis `ax` (angular, about `e_K`) at coordinate `q` and rate `qd`.
 #[inline(always)]
 pub(super) fn plane_revolute_step<const K: usize>(
     model: &Model,
@@ -27,10 +27,11 @@ pub(super) fn plane_revolute_step<const K: usize>(
     i: usize,
     p: usize,
     ax: &JointAxis,
-    [s, c]: [f64; 2],
+    q: f64,
     qd: f64,
 ) {
     let (a, b) = ((K + 1) % 3, (K + 2) % 3);
+    let (s, c) = sin_cos(q * ax.scale);
     let trans = model.bodies[i].placement_x.trans;
     // World rotation `W_p A^T`: columns a and b mix, column K is the parent's.
     let wp = &data.world_rot[p];

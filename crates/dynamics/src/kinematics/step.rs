@@ -5,9 +5,7 @@ use super::joint::joint_kinematics;
 use super::plane::{plane_revolute_step, translation_step};
 use crate::model::joint::Joint;
 use crate::spatial::plane::{General, Plane, RotationOps};
-use crate::spatial::{
-    sin_cos, Force, Motion, RigidInertia, SpatialTransform, SubspaceKind, Wrench,
-};
+use crate::spatial::{Force, Motion, RigidInertia, SpatialTransform, SubspaceKind, Wrench};
 use crate::{Data, Model};
 use nalgebra::{DVector, Matrix3, Vector3};
 
@@ -21,41 +19,25 @@ pub(crate) fn body_kinematics(
     q: &DVector<f64>,
     v: Option<&DVector<f64>>,
 ) {
-    body_step(model, data, i, q.as_slice(), v.map(|v| v.as_slice()), None);
+    body_step(model, data, i, q.as_slice(), v.map(|v| v.as_slice()));
 }
 
 /// [`body_kinematics`] on coordinate slices (taken once per pass by the callers). Revolute
 /// joints about a coordinate axis of an unrotated placement take the written-out path of
-/// [`super::plane`], with their `[sin, cos]` from `trig` (the pass's batch, by
-/// `Data::plane_slot`) when given; fixed joints with a translation-only placement take its
-/// translation step (inlined into the passes; `p < i`, true for every model, lets the compiler
-/// drop bounds checks on the parent's entries).
+/// [`super::plane`], fixed joints with a translation-only placement its translation step (inlined into the passes; `p < i`, true for every model, lets the
+/// compiler drop bounds checks on the parent's entries).
 #[inline(always)]
-pub(crate) fn body_step(
-    model: &Model,
-    data: &mut Data,
-    i: usize,
-    q: &[f64],
-    v: Option<&[f64]>,
-    trig: Option<&[[f64; 2]]>,
-) {
+pub(crate) fn body_step(model: &Model, data: &mut Data, i: usize, q: &[f64], v: Option<&[f64]>) {
     let body = &model.bodies[i];
     if let (Some(k), Some(p), Some(v), Joint::Revolute(ax) | Joint::Rotor(ax)) =
         (data.plane_axis[i], body.parent, v, &body.joint)
     {
         if ax.kind == SubspaceKind::Angular && p < i {
-            let sc = match trig {
-                Some(t) => t[data.plane_slot[i]],
-                None => {
-                    let (s, c) = sin_cos(q[body.q_index] * ax.scale);
-                    [s, c]
-                }
-            };
-            let qd = v[body.v_index];
+            let (qi, qd) = (q[body.q_index], v[body.v_index]);
             match k {
-                0 => plane_revolute_step::<0>(model, data, i, p, ax, sc, qd),
-                1 => plane_revolute_step::<1>(model, data, i, p, ax, sc, qd),
-                _ => plane_revolute_step::<2>(model, data, i, p, ax, sc, qd),
+                0 => plane_revolute_step::<0>(model, data, i, p, ax, qi, qd),
+                1 => plane_revolute_step::<1>(model, data, i, p, ax, qi, qd),
+                _ => plane_revolute_step::<2>(model, data, i, p, ax, qi, qd),
             }
             return;
         }

@@ -35,7 +35,7 @@ pub use force::{Force, Wrench};
 pub use inertia::RigidInertia;
 pub use motion::Motion;
 pub use transform::SpatialTransform;
-pub use trig::{sin_cos, sin_cos_into};
+pub use trig::sin_cos;
 
 use nalgebra::{Matrix3, Vector3};
 

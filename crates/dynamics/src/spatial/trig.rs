@@ -12,51 +12,25 @@ const PIO2_LO: f64 = 2.022_266_248_795_950_6e-21;
 /// Largest `|x|` reduced here (quadrant count far below `2^20`).
 const REDUCTION_LIMIT: f64 = 1.0e5;
 
-/// `1.5 * 2^52`: adding it rounds `|t| < 2^51` to an integer held in the low mantissa bits.
-const ROUND_MAGIC: f64 = 6_755_399_441_055_744.0;
-
 /// `(sin x, cos x)`, see the module doc.
 #[inline]
 pub fn sin_cos(x: f64) -> (f64, f64) {
     if x.is_nan() || x.abs() > REDUCTION_LIMIT {
         return x.sin_cos();
     }
-    let [s, c] = reduced(x);
-    (s, c)
-}
-
-/// `[sin x, cos x]` of every entry of `x` into `out` (equal lengths), the same values as
-/// [`sin_cos`]: one branch-free loop (vectorised), then the library function for the entries
-/// beyond `REDUCTION_LIMIT` or not finite.
-pub fn sin_cos_into(x: &[f64], out: &mut [[f64; 2]]) {
-    for (o, &x) in out.iter_mut().zip(x) {
-        *o = reduced(x);
-    }
-    for (o, &x) in out.iter_mut().zip(x) {
-        if x.is_nan() || x.abs() > REDUCTION_LIMIT {
-            let (s, c) = x.sin_cos();
-            *o = [s, c];
-        }
-    }
-}
-
-/// `[sin x, cos x]` for `|x| <= REDUCTION_LIMIT` without branches: the quadrant `k` of
-/// `x 2/pi` is rounded by `ROUND_MAGIC` (its low bits are `k mod 4`), the Taylor kernels are
-/// evaluated at `r = x - k pi/2`, and the quadrant picks (by bit masks) and signs them:
-/// quadrant 0: `(s, c)`, 1: `(c, -s)`, 2: `(-s, -c)`, 3: `(-c, s)`.
-#[inline(always)]
-fn reduced(x: f64) -> [f64; 2] {
-    let t = x * std::f64::consts::FRAC_2_PI + ROUND_MAGIC;
-    let k = t - ROUND_MAGIC;
+    let k = (x * std::f64::consts::FRAC_2_PI).round();
     let r = ((x - k * PIO2_HI) - k * PIO2_MID) - k * PIO2_LO;
     let (s, c) = kernel(r);
-    let quadrant = t.to_bits();
-    let swap = (quadrant & 1).wrapping_neg();
-    let (sb, cb) = (s.to_bits(), c.to_bits());
-    let (a, b) = ((sb & !swap) | (cb & swap), (cb & !swap) | (sb & swap));
+    // Quadrant 0: (s, c), 1: (c, -s), 2: (-s, -c), 3: (-c, s), by selects and sign-bit flips
+    // (bit-identical to negation) instead of a jump table.
+    let quadrant = k as i64 as u64;
+    let (a, b) = if quadrant & 1 == 0 { (s, c) } else { (c, s) };
     let sin_sign = (quadrant & 2) << 62;
     let cos_sign = (quadrant.wrapping_add(1) & 2) << 62;
-    [f64::from_bits(a ^ sin_sign), f64::from_bits(b ^ cos_sign)]
+    (
+        f64::from_bits(a.to_bits() ^ sin_sign),
+        f64::from_bits(b.to_bits() ^ cos_sign),
+    )
 }
 
 /// Taylor kernels of sine and cosine for `|r| <= pi/4` (Horner in `r^2`).
@@ -111,30 +85,5 @@ mod tests {
         }
         assert!(worst <= 2.3e-16, "largest deviation {worst:e}");
         assert!(sin_cos(f64::NAN).0.is_nan() && sin_cos(f64::INFINITY).1.is_nan());
-    }
-
-    /// The batch equals the scalar function bit for bit, also for the library fallbacks
-    /// (beyond the reduction limit, infinite, NaN) mixed into a batch.
-    #[test]
-    fn batch_equals_scalar() {
-        let mut x: Vec<f64> = (-5000..=5000).map(|i| i as f64 * 0.0123).collect();
-        let quarter = std::f64::consts::FRAC_PI_4;
-        x.extend((-40..=40).map(|k| k as f64 * quarter));
-        x.extend([
-            99_999.9,
-            -1e5,
-            1.5e5,
-            -3e7,
-            f64::INFINITY,
-            f64::NAN,
-            -0.0,
-            5e-324,
-        ]);
-        let mut out = vec![[0.0; 2]; x.len()];
-        sin_cos_into(&x, &mut out);
-        for (&x, o) in x.iter().zip(&out) {
-            let (s, c) = sin_cos(x);
-            assert_eq!([s.to_bits(), c.to_bits()], o.map(f64::to_bits), "x = {x}");
-        }
     }
 }
