@@ -103,6 +103,10 @@ pub fn run(args: SimulateArgs) -> CliResult {
     let mut signals = Signals::new(&job.plant, true);
     let duration = job.scenario.duration;
     let mut rec = Recorder::with_capacity(job.rows());
+    // Columns registered and the buffer mapped before the timed loop (no page faults in it).
+    signals.register(&mut rec)?;
+    output::register_total(&mut rec)?;
+    rec.prefault();
     let mut bar = progress::Progress::new(duration);
     let mut last_t = 0.0;
     let due = job.recording();

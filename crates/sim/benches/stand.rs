@@ -42,13 +42,13 @@ fn stand(c: &mut Criterion) {
     });
     g.bench_function("0.2 s simulated, signals recorded", |b| {
         b.iter_batched(
-            setup,
-            |(plant, sc)| black_box(recorded(plant, sc)),
+            || recording(setup()),
+            |(plant, sc, signals, rec)| black_box(recorded(plant, sc, signals, rec)),
             BatchSize::LargeInput,
         )
     });
-    let (plant, sc) = setup();
-    let rec = recorded(plant, sc);
+    let (plant, sc, signals, rec) = recording(setup());
+    let rec = recorded(plant, sc, signals, rec);
     let path = std::env::temp_dir().join(format!("biped_bench_{}.csv", std::process::id()));
     g.bench_function("CSV of 0.2 s recorded (201 rows)", |b| {
         b.iter(|| rec.write_csv(black_box(&path)).unwrap())
@@ -128,10 +128,18 @@ fn stand(c: &mut Criterion) {
     g.finish();
 }
 
-/// Runs the scenario recording every signal (with CoM and `L_G`) each cycle.
-fn recorded(plant: Plant, sc: Scenario) -> Recorder {
+/// Set-up of a recorded run as `biped simulate` does it before its timed loop: every signal
+/// (with CoM and `L_G`) registered and the recorder's buffer mapped ([`Recorder::prefault`]).
+fn recording((plant, sc): (Plant, Scenario)) -> (Plant, Scenario, Signals, Recorder) {
     let mut signals = Signals::new(&plant, true);
     let mut rec = Recorder::with_capacity(256);
+    signals.register(&mut rec).unwrap();
+    rec.prefault();
+    (plant, sc, signals, rec)
+}
+
+/// Runs the scenario recording every signal each cycle.
+fn recorded(plant: Plant, sc: Scenario, mut signals: Signals, mut rec: Recorder) -> Recorder {
     sc.run(plant, Method::Rk4, &mut |f| signals.record(f, &mut rec))
         .unwrap();
     rec

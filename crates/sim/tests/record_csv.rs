@@ -153,6 +153,8 @@ enum Op {
     Register(usize, usize),
     /// Set signal `k` in the current row to values starting at this number.
     Set(usize, f64),
+    /// Map the reserved buffer ahead (`Recorder::prefault`): changes no value.
+    Prefault,
 }
 
 fn op() -> impl proptest::strategy::Strategy<Value = Op> {
@@ -161,16 +163,18 @@ fn op() -> impl proptest::strategy::Strategy<Value = Op> {
         (0.0f64..1.0).prop_map(Op::Sample),
         (0usize..5, 1usize..4).prop_map(|(k, n)| Op::Register(k, n)),
         (0usize..5, -9.0f64..9.0).prop_map(|(k, v)| Op::Set(k, v)),
+        Just(Op::Prefault),
     ]
 }
 
 proptest::proptest! {
     /// Against a column-per-`Vec` reference model: random interleavings of registering
     /// (also after rows exist), sampling and setting give the same columns, NaN where unset,
-    /// and the CSV holds the same rows bit for bit.
+    /// and the CSV holds the same rows bit for bit; prefaulting the reserved rows at any point
+    /// changes nothing.
     #[test]
     fn matches_a_column_model(ops in proptest::collection::vec(op(), 1..60)) {
-        let mut rec = Recorder::new();
+        let mut rec = Recorder::with_capacity(6);
         let mut lens: Vec<Option<usize>> = vec![None; 5];
         // Reference: column names in registration order and their values.
         let (mut names, mut cols): (Vec<String>, Vec<Vec<f64>>) = (Vec::new(), Vec::new());
@@ -190,6 +194,7 @@ proptest::proptest! {
                         cols.push(vec![f64::NAN; rec.len()]);
                     }
                 }
+                Op::Prefault => rec.prefault(),
                 Op::Set(k, v) if lens[k].is_some() && !rec.is_empty() => {
                     let n = lens[k].unwrap();
                     let values: Vec<f64> = (0..n).map(|i| v + i as f64).collect();

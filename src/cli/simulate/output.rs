@@ -18,6 +18,13 @@ const MAX_LINES: usize = 8;
 /// Column of the total vertical contact force, recorded besides the library's signals.
 pub const TOTAL_FZ: &str = "contact.fz";
 
+/// Registers the total-force column of [`record_total`] (before the run, see `Recorder::prefault`).
+pub fn register_total(rec: &mut Recorder) -> Result<(), SimError> {
+    rec.register(TOTAL_FZ)
+        .map(|_| ())
+        .map_err(|e| SimError::Output(e.to_string()))
+}
+
 /// Records the total vertical contact force of `f` in the current row of `rec`.
 pub fn record_total(f: &Frame, rec: &mut Recorder) -> Result<(), SimError> {
     let fz: f64 = f

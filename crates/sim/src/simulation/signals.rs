@@ -88,16 +88,26 @@ impl Signals {
         Ok(&self.values)
     }
 
+    /// Registers every signal in `rec` as scalar columns (done by the first [`Self::record`]
+    /// otherwise; call it before a timed loop to size the recorder up front, e.g. for
+    /// [`Recorder::prefault`]). Idempotent.
+    pub fn register(&mut self, rec: &mut Recorder) -> Result<(), SimError> {
+        let out = |e: crate::record::RecordError| SimError::Output(e.to_string());
+        self.ids.clear();
+        for n in &self.names {
+            self.ids.push(rec.register(n).map_err(out)?);
+        }
+        let first = self.ids.first().map_or(0, |id| id.column());
+        self.block = (self.ids.iter().enumerate()).all(|(k, id)| id.column() == first + k);
+        Ok(())
+    }
+
     /// Appends one row at `frame.t` to `rec` with every signal (registered as scalar columns
     /// on the first call; later calls only write by id).
     pub fn record(&mut self, frame: &Frame, rec: &mut Recorder) -> Result<(), SimError> {
         let out = |e: crate::record::RecordError| SimError::Output(e.to_string());
         if self.ids.is_empty() {
-            for n in &self.names {
-                self.ids.push(rec.register(n).map_err(out)?);
-            }
-            let first = self.ids.first().map_or(0, |id| id.column());
-            self.block = (self.ids.iter().enumerate()).all(|(k, id)| id.column() == first + k);
+            self.register(rec)?;
         }
         rec.sample(frame.t).map_err(out)?;
         self.values(frame)?;
