@@ -10,8 +10,8 @@ mod loop_support;
 use biped_dynamics::mechanism::ankle::{AnkleDrive, AnkleDriveParams, AnklePart};
 use biped_dynamics::model::Mechanism;
 use biped_dynamics::{
-    centroidal_momentum, inverse_dynamics, BodySpec, Centroidal, Data, JointModel, Model,
-    ModelBuilder, RigidInertia, Wrench,
+    centroidal_momentum, inverse_dynamics, Centroidal, Data, JointModel, Model, ModelBuilder,
+    RigidInertia, Wrench,
 };
 use loop_support::*;
 use nalgebra::{DVector, Isometry3, Matrix3, Vector3};
@@ -38,15 +38,7 @@ fn ankle_leg(seed: u64, axisymmetric: [bool; 2]) -> Model {
     let drive = AnkleDrive::new(AnkleDriveParams::default()).unwrap();
     let mut b = ModelBuilder::new();
     let mut add = |name: &str, parent, joint, placement, inertia| {
-        b.add_body(BodySpec {
-            name: name.into(),
-            joint_name: name.into(),
-            parent,
-            joint,
-            placement,
-            inertia,
-        })
-        .unwrap()
+        add_named(&mut b, name, parent, joint, placement, inertia)
     };
     let rev = |axis| JointModel::Revolute { axis };
     let (i0, i1, i2) = (

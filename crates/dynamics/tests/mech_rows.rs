@@ -33,15 +33,8 @@ fn add(b: &mut ModelBuilder, name: &str, parent: Option<BodyId>, joint: JointMod
             2.0,
         ),
     };
-    b.add_body(BodySpec {
-        name: name.into(),
-        joint_name: name.into(),
-        parent,
-        joint,
-        placement,
-        inertia: inertia(m),
-    })
-    .unwrap()
+    b.add_body(BodySpec::named(name, parent, joint, placement, inertia(m)))
+        .unwrap()
 }
 
 fn revolute(axis: Vector3<f64>) -> JointModel {

@@ -111,13 +111,8 @@ mod tests {
         })
         .expect("valid rotor");
         let mut b = ModelBuilder::new();
-        let spec = |name: &str, parent, joint, placement| BodySpec {
-            name: name.into(),
-            joint_name: name.into(),
-            parent,
-            joint,
-            placement,
-            inertia,
+        let spec = |name: &str, parent, joint, placement| {
+            BodySpec::named(name, parent, joint, placement, inertia)
         };
         let place = Isometry3::new(Vector3::new(0.2, 0.1, -0.3), Vector3::new(0.4, 0.5, -0.6));
         let axis = Vector3::y_axis();

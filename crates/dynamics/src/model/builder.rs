@@ -25,6 +25,26 @@ pub struct BodySpec {
     pub inertia: RigidInertia,
 }
 
+impl BodySpec {
+    /// Body `name` whose joint is named alike.
+    pub fn named(
+        name: &str,
+        parent: Option<BodyId>,
+        joint: JointModel,
+        placement: Isometry3<f64>,
+        inertia: RigidInertia,
+    ) -> Self {
+        Self {
+            name: name.into(),
+            joint_name: name.into(),
+            parent,
+            joint,
+            placement,
+            inertia,
+        }
+    }
+}
+
 /// Incremental, validating constructor of a [`Model`].
 #[derive(Clone, Debug)]
 pub struct ModelBuilder {

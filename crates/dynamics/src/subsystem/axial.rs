@@ -308,15 +308,8 @@ mod tests {
         let off = RigidInertia::new(0.1, com(1e-3), ic).expect("valid");
         let mut b = ModelBuilder::new();
         let mut add = |name: String, parent, joint, inertia| {
-            b.add_body(BodySpec {
-                name: name.clone(),
-                joint_name: name,
-                parent,
-                joint,
-                placement: Isometry3::identity(),
-                inertia,
-            })
-            .expect("body")
+            let spec = BodySpec::named(&name, parent, joint, Isometry3::identity(), inertia);
+            b.add_body(spec).expect("body")
         };
         let rev = |axis| JointModel::Revolute { axis };
         let shank = add("shank".into(), None, rev(Vector3::z_axis()), round);

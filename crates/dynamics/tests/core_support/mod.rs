@@ -225,6 +225,19 @@ pub fn random_vec(n: usize, s: f64, rng: &mut StdRng) -> DVector<f64> {
     DVector::from_fn(n, |_, _| rng.random_range(-s..s))
 }
 
+/// Adds body `name` (its joint named alike) to `b`; its id.
+pub fn add_named(
+    b: &mut ModelBuilder,
+    name: &str,
+    parent: Option<usize>,
+    joint: JointModel,
+    placement: Isometry3<f64>,
+    inertia: RigidInertia,
+) -> usize {
+    b.add_body(BodySpec::named(name, parent, joint, placement, inertia))
+        .unwrap()
+}
+
 /// Seeded generator.
 pub fn rng(seed: u64) -> StdRng {
     StdRng::seed_from_u64(seed)

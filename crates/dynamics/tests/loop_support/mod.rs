@@ -4,8 +4,9 @@
 #[path = "../core_support/mod.rs"]
 mod core_support;
 
+#[allow(unused_imports)] // Each test binary uses a different part.
 pub use core_support::{
-    random_axis, random_inertia, random_pose, random_q, random_vec, rel_diff, rng,
+    add_named, random_axis, random_inertia, random_pose, random_q, random_vec, rel_diff, rng,
 };
 
 use biped_dynamics::{
