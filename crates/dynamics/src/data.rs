@@ -83,14 +83,16 @@ pub struct Data {
     pub(crate) sub_b: Vec<[Force; MAX_SUBSYSTEM_DOF]>,
     /// `p_S` (2.68 for sub-systems), per sub-system.
     pub(crate) sub_p: Vec<[f64; MAX_SUBSYSTEM_DOF]>,
-    /// Constant frames of Harmonic Drive rotors (placement times initial rotor pose), per body.
+    /// Per body: the constant frame of a Harmonic Drive rotor (placement times initial rotor
+    /// pose) or of an ankle screw rotor or nut at zero spin and travel ([`crate::kinematics::rotor_frames`]).
     pub(crate) rotor_frame: Vec<SpatialTransform>,
-    /// Spin-invariant `C^T M C`, `B_S` row and `M_S` entry of axisymmetric rotor members (2.76).
+    /// Per body: its parent-frame data if it is an axial member of its sub-system (an
+    /// axisymmetric motor rotor or a roller-screw nut, `crate::subsystem::axial`, (2.76)).
     pub(crate) axial_member: Vec<Option<AxialMember>>,
     /// Bodies with a [`Data::axial_member`], ascending.
     pub(crate) axial_members: Vec<usize>,
-    /// Per body: the spin rate of a roller-screw rotor with a [`Data::axial_member`] at the
-    /// last forward-dynamics kinematics pass (unused for other bodies).
+    /// Per body: the spin or travel of a roller-screw rotor or nut with a
+    /// [`Data::axial_member`] at the last forward-dynamics kinematics pass (unused otherwise).
     pub(crate) axial_motion: Vec<AxialMotion>,
     /// Per body: a fixed-joint leaf without inertia (a sole or tool frame): its `M-bar` stays
     /// zero, so the O(n) backward pass only propagates its force.

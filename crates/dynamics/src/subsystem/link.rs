@@ -3,7 +3,7 @@
 //! reduced to the ordinary one-DoF body step plus constant rotor terms.
 //!
 //! With the link's `U = M-bar J`, `f-hat = M-bar b - f-bar` (link frame) and the rotors'
-//! constants ([`super::rotor`]) summed, `M_S = J^T U + sum s^T K s` (a scalar `D`),
+//! constants ([`super::axial`]) summed, `M_S = J^T U + sum s^T K s` (a scalar `D`),
 //! `B_S = C^T U + sum K s` (parent frame), `p_S = (Q - J^T f-hat - sum s . h) / D` with the
 //! rotors' parent-frame `h = C^T (M b - f)`, `K_S = C^T M-bar C + sum K - B_S B_S^T / D` and
 //! `k_S = C^T f-hat + sum h + B_S p_S`. No member kinematics (2.77)-(2.79) are formed: the
