@@ -7,7 +7,7 @@ use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::model::{Body, JointModel};
 use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, SpatialTransform};
-use crate::subsystem::axial::{axial_members, AxialMember};
+use crate::subsystem::axial::{axial_members, carriers, AxialMember, Carried};
 use crate::subsystem::link::{link_rotor_subsystems, LinkRotors};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
 use crate::Model;
@@ -89,6 +89,8 @@ pub struct Data {
     /// Per body: its parent-frame data if it is an axial member of its sub-system (an
     /// axisymmetric motor rotor or a roller-screw nut, `crate::subsystem::axial`, (2.76)).
     pub(crate) axial_member: Vec<Option<AxialMember>>,
+    /// Per body: the riders it carries and their lumped inertia ([`Carried`]).
+    pub(crate) carried: Vec<Option<Carried>>,
     /// Bodies with a [`Data::axial_member`], ascending.
     pub(crate) axial_members: Vec<usize>,
     /// Per body: the spin or travel of a roller-screw rotor or nut with a
@@ -245,6 +247,7 @@ impl Data {
             mbar_needed: mbar_needed(model, &axial_member, &massless_leaf),
             massless_leaf,
             axial_members: (0..n).filter(|&i| axial_member[i].is_some()).collect(),
+            carried: carriers(model, &axial_member),
             axial_motion: vec![AxialMotion::default(); n],
             axial_member,
             rotor_frame: rotor_frames,

@@ -66,7 +66,7 @@ pub fn centroidal_momentum_current(
     let (mut ang, mut lin) = (Vector3::zeros(), Vector3::zeros());
     for (i, body) in model.bodies().iter().enumerate() {
         let (rot, pos, h, c, m) = match (&data.axial_member[i], body.parent()) {
-            (Some(rc), Some(p)) => axial_momentum(rc, data, i, p),
+            (Some(rc), Some(_)) => axial_momentum(rc, data, i),
             _ => {
                 let inertia = body.inertia();
                 let h = inertia.apply(&data.vel[i]);
@@ -102,8 +102,8 @@ fn axial_momentum<'d>(
     rc: &AxialMember,
     data: &'d Data,
     i: usize,
-    p: usize,
 ) -> (&'d Matrix3<f64>, Vector3<f64>, Force, Vector3<f64>, f64) {
+    let p = rc.carrier;
     let vel = &data.vel[p];
     let (c, qd, _) = rc.state(data, i);
     let w = vel.ang + rc.s.ang * qd;

@@ -110,6 +110,10 @@ pub(crate) fn axial_motion(body: &Body, data: &mut Data, i: usize, q: &[f64], v:
             mechanism: Mechanism::Ankle(part),
             ..
         } => part.axial_motion_cached(&qin[..n], &qdin[..n], &mut data.ankle_loop),
+        JointModel::Coupled {
+            mechanism: Mechanism::Knee(part),
+            ..
+        } => part.axial_motion_cached(&qin[..n], &qdin[..n], &mut data.knee_loop),
         _ => Ok(None),
     };
     match rate {

@@ -132,6 +132,27 @@ impl RigidInertia {
         Self::from_parts(mass, com, (inertia + inertia.transpose()) * 0.5)
     }
 
+    /// Sum with `other` translated by `offset` (same axes, no rotation): the carrier-frame
+    /// inertia of a body plus a part sliding along an axis of its frame.
+    #[inline]
+    pub(crate) fn add_shifted(&self, other: &RigidInertia, offset: &Vector3<f64>) -> Self {
+        let (m1, m2) = (self.mass, other.mass);
+        let mass = m1 + m2;
+        let c2 = other.com + offset;
+        let com = if mass > 0.0 {
+            (self.h + c2 * m2) / mass
+        } else {
+            (self.com + c2) * 0.5
+        };
+        let shift = |m: f64, d: Vector3<f64>| {
+            let s = skew(&d);
+            -(s * s) * m
+        };
+        let inertia =
+            self.inertia_com + shift(m1, self.com - com) + other.inertia_com + shift(m2, c2 - com);
+        Self::from_parts(mass, com, inertia)
+    }
+
     /// `M a` for the 6x6 mass matrix of (2.22): `[I_O w + h x v; m v - h x w]`.
     #[inline]
     pub fn apply(&self, m: &Motion) -> Force {

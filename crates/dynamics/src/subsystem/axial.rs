@@ -29,8 +29,11 @@
 //! travel, `rho`, its rate and `sigma` from the loop the drive's rod closes anyway.
 
 use super::on::add_rigid_congruence;
+use super::rigid::is_axisymmetric;
+use super::Subsystem;
 use crate::mechanism::ankle::AnklePart;
 use crate::mechanism::harmonic_drive::HarmonicDriveRotor;
+use crate::mechanism::knee::{KneeCoupling, KneePart};
 use crate::model::coupling::Mechanism;
 use crate::model::JointModel;
 use crate::spatial::{
@@ -63,7 +66,8 @@ pub(crate) struct AxialMember {
     pub(crate) congruence: ArticulatedInertia,
     /// Column of the rotor's coordinate within the sub-system ([`AxialKind::Geared`]).
     pub(crate) column: usize,
-    /// `C^T M J = K s`, the contribution to the member's row of `B_S` (rotors).
+    /// `C^T M J = K s`, the contribution to the member's row of `B_S` (constant, also for a
+    /// slider).
     pub(crate) ks: Force,
     /// `J^T M J = s^T K s`, the contribution to the diagonal of `M_S`.
     pub(crate) sks: f64,
@@ -78,6 +82,42 @@ pub(crate) struct AxialMember {
     pub(crate) inertia_com: Matrix3<f64>,
     /// Velocity index of the driving coordinate (the first input's for a coupled part).
     pub(crate) v_index: usize,
+    /// The body whose frame carries the axis: the sub-system's parent, or for a rider the
+    /// sibling member it rides on ([`Carried`]).
+    pub(crate) carrier: usize,
+    /// True for a rider: its terms are lumped into its carrier member's.
+    pub(crate) rider: bool,
+}
+
+/// A rigid sub-system member that carries riders (the knee's screw housing with its rotor and
+/// nut): its inertia plus the spin-invariant riders' (constant in its frame), and the riders
+/// as (body, member index). The O(n) passes treat carrier and riders as one body of the
+/// carrier's motion plus the riders' columns `s rho` (see the module doc).
+#[derive(Clone, Debug)]
+pub(crate) struct Carried {
+    /// Carrier inertia plus its spin-invariant riders' (carrier frame).
+    pub(crate) base: RigidInertia,
+    /// The lumped inertia is axisymmetric about the carrier's z axis at every travel.
+    pub(crate) axisymmetric: bool,
+    /// Riders: (body, member index in the sub-system).
+    pub(crate) riders: Vec<(usize, usize)>,
+    /// The sub-system of carrier and riders.
+    pub(crate) subsystem: usize,
+}
+
+impl Carried {
+    /// Carrier plus riders at the travel of the last kinematics pass (carrier frame).
+    #[inline]
+    pub(crate) fn lumped(&self, model: &Model, data: &crate::Data) -> RigidInertia {
+        let mut m = self.base;
+        for &(r, _) in &self.riders {
+            if let Some(rc) = data.axial_member[r].filter(|rc| rc.kind == AxialKind::Slider) {
+                let offset = rc.s.lin * data.axial_motion[r].travel;
+                m = m.add_shifted(&model.bodies[r].inertia, &offset);
+            }
+        }
+        m
+    }
 }
 
 impl AxialMember {
@@ -93,7 +133,8 @@ impl AxialMember {
         }
     }
 
-    /// `K`, `K s` and `s^T K s` with the CoM at `c` (from [`Self::state`]).
+    /// `K`, `K s` and `s^T K s` with the CoM at `c` (from [`Self::state`]); only a slider's
+    /// `K` depends on it.
     #[inline(always)]
     pub(crate) fn congruence_at(&self, c: &Vector3<f64>) -> (ArticulatedInertia, Force, f64) {
         if self.kind != AxialKind::Slider {
@@ -106,8 +147,7 @@ impl AxialMember {
             cross: skew(&h),
             lin: Matrix3::identity() * self.mass,
         };
-        let e = &self.s.lin;
-        (k, Force::new(h.cross(e), e * self.mass), self.sks)
+        (k, self.ks, self.sks)
     }
 }
 
@@ -149,6 +189,7 @@ pub(crate) fn axial_members(
     frames: &[SpatialTransform],
 ) -> Vec<Option<AxialMember>> {
     let mut out = vec![None; model.nbodies()];
+    let leaf = |j: usize| model.bodies.iter().all(|b| b.parent != Some(j));
     for sub in &model.subsystems {
         for (mi, &j) in sub.members.iter().enumerate() {
             let body = &model.bodies[j];
@@ -156,6 +197,10 @@ pub(crate) fn axial_members(
                 false => Motion::new(Vector3::z(), Vector3::zeros()),
                 true => Motion::new(Vector3::zeros(), Vector3::z()),
             };
+            let spin = || (unit(false), AxialKind::Screw);
+            let slide = || (unit(true), AxialKind::Slider);
+            let mut carrier = sub.parent;
+            let mut frame = frames[j];
             let (column, kind) = match &body.joint_model {
                 JointModel::Coupled {
                     mechanism: Mechanism::HarmonicDrive(rotor),
@@ -165,24 +210,44 @@ pub(crate) fn axial_members(
                     mechanism: Mechanism::Ankle(part),
                     ..
                 } => match part.axis_frame() {
-                    Some((_, _, AnklePart::Rotor)) => (unit(false), AxialKind::Screw),
-                    Some((_, _, _)) => (unit(true), AxialKind::Slider),
+                    Some((_, _, AnklePart::Rotor)) => spin(),
+                    Some((_, _, _)) => slide(),
                     None => continue,
                 },
+                JointModel::Coupled {
+                    mechanism: Mechanism::Knee(part),
+                    inputs,
+                } if part.part != KneePart::Housing => {
+                    // Riders of the housing: rotor and nut frames are the housing's, spun
+                    // or moved along its z axis.
+                    carrier = knee_housing(model, sub, part, inputs, leaf);
+                    frame = SpatialTransform::identity();
+                    match (part.part, carrier) {
+                        (_, None) => continue,
+                        (KneePart::Rotor, _) => spin(),
+                        _ => slide(),
+                    }
+                }
                 _ => continue,
             };
-            let leaf = model.bodies.iter().all(|b| b.parent != Some(j));
-            if !(leaf && sub.rigid_member[mi] && body.parent == sub.parent) {
+            if !(leaf(j) && sub.rigid_member[mi] && body.parent == sub.parent) {
                 continue;
             }
-            let frame = &frames[j];
+            let Some(carrier) = carrier else { continue };
             let congruence = match kind {
                 AxialKind::Slider => Some(ArticulatedInertia::zero()),
-                _ => spin_invariant(&body.inertia, frame),
+                _ => spin_invariant(&body.inertia, &frame),
             };
             out[j] = congruence.map(|congruence| {
                 let s = frame.inv_apply_motion(&column);
-                let ks = congruence.apply(&s);
+                let com = frame.rot.tr_mul(&body.inertia.com()) + frame.trans;
+                let mass = body.inertia.mass();
+                // A slider's `K s = [h x e; m e]` does not change with its travel `l` along
+                // `e`: `h = m (c + e l)` and `e x e = 0`.
+                let ks = match kind {
+                    AxialKind::Slider => Force::new((com * mass).cross(&s.lin), s.lin * mass),
+                    _ => congruence.apply(&s),
+                };
                 AxialMember {
                     kind,
                     congruence,
@@ -193,13 +258,72 @@ pub(crate) fn axial_members(
                         _ => s.dot(&ks),
                     },
                     s,
-                    mass: body.inertia.mass(),
-                    com: frame.rot.tr_mul(&body.inertia.com()) + frame.trans,
+                    mass,
+                    com,
                     inertia_com: sym_congruence(&body.inertia.inertia_about_com(), &frame.rot),
                     v_index: body.v_set.as_slice()[0],
+                    rider: Some(carrier) != sub.parent,
+                    carrier,
                 }
             });
         }
+    }
+    out
+}
+
+/// The rigid leaf housing of the same knee drive and inputs in sub-system `sub`, the carrier
+/// of that drive's rotor and nut.
+fn knee_housing(
+    model: &Model,
+    sub: &Subsystem,
+    part: &KneeCoupling,
+    inputs: &[usize],
+    leaf: impl Fn(usize) -> bool,
+) -> Option<usize> {
+    let mut members = sub.members.iter().zip(&sub.rigid_member);
+    members.find_map(|(&h, &rigid)| match &model.bodies[h].joint_model {
+        JointModel::Coupled {
+            mechanism: Mechanism::Knee(hp),
+            inputs: hin,
+        } if hp.part == KneePart::Housing
+            && hp.drive == part.drive
+            && hin.as_slice() == inputs
+            && rigid
+            && leaf(h) =>
+        {
+            Some(h)
+        }
+        _ => None,
+    })
+}
+
+/// Per body: the riders it carries ([`Carried`]), from the axial members.
+pub(crate) fn carriers(model: &Model, axial: &[Option<AxialMember>]) -> Vec<Option<Carried>> {
+    let mut out: Vec<Option<Carried>> = vec![None; model.nbodies()];
+    for (subsystem, sub) in model.subsystems.iter().enumerate() {
+        for (mi, &r) in sub.members.iter().enumerate() {
+            let Some(rc) = axial[r].filter(|rc| rc.rider) else {
+                continue;
+            };
+            let c = rc.carrier;
+            let carried = out[c].get_or_insert_with(|| Carried {
+                base: model.bodies[c].inertia,
+                axisymmetric: true,
+                riders: Vec::new(),
+                subsystem,
+            });
+            let inertia = &model.bodies[r].inertia;
+            if rc.kind != AxialKind::Slider {
+                carried.base = carried.base.add_shifted(inertia, &Vector3::zeros());
+            }
+            let on_axis = is_axisymmetric(&inertia.com(), &inertia.inertia_about_com());
+            carried.axisymmetric &= on_axis && rc.s.lin.x == 0.0 && rc.s.lin.y == 0.0;
+            carried.riders.push((r, mi));
+        }
+    }
+    for carried in out.iter_mut().flatten() {
+        let b = &carried.base;
+        carried.axisymmetric &= is_axisymmetric(&b.com(), &b.inertia_about_com());
     }
     out
 }
@@ -288,6 +412,55 @@ mod tests {
                 };
                 assert_eq!(kind, expected, "{part:?} {act}");
             }
+        }
+    }
+
+    /// The knee's rotor (when axisymmetric) and nut ride on the housing of the same drive,
+    /// which carries them with its inertia plus the rotor's as the constant base.
+    #[test]
+    fn knee_parts_ride_on_the_housing() {
+        use crate::mechanism::knee::{KneeDrive, KneeDriveParams};
+        use crate::model::{BodySpec, ModelBuilder};
+        let drive = KneeDrive::new(KneeDriveParams::default()).expect("drive");
+        let ic = Matrix3::from_diagonal(&Vector3::new(4e-5, 4e-5, 2e-5));
+        for round_rotor in [true, false] {
+            let com = Vector3::new(if round_rotor { 0.0 } else { 1e-3 }, 0.0, 0.05);
+            let rotor = RigidInertia::new(0.1, com, ic).expect("valid");
+            let part = RigidInertia::new(0.2, Vector3::new(0.0, 0.0, 0.1), ic).expect("valid");
+            let mut b = ModelBuilder::new();
+            let mut add = |name: &str, parent, joint, inertia| {
+                let spec = BodySpec::named(name, parent, joint, Isometry3::identity(), inertia);
+                b.add_body(spec).expect("body")
+            };
+            let z = JointModel::Revolute {
+                axis: Vector3::z_axis(),
+            };
+            let thigh = add("thigh", None, z.clone(), part);
+            let shank = add("shank", Some(thigh), z, part);
+            let mut ids = vec![];
+            for (p, inertia) in [
+                (KneePart::Housing, part),
+                (KneePart::Nut, part),
+                (KneePart::Rotor, rotor),
+            ] {
+                let joint = JointModel::Coupled {
+                    mechanism: Mechanism::Knee(drive.part(p)),
+                    inputs: vec![shank],
+                };
+                ids.push(add(&format!("{p:?}"), Some(thigh), joint, inertia));
+            }
+            let model = b.build().expect("model");
+            let data = crate::Data::new(&model);
+            let (housing, nut, rotor) = (ids[0], ids[1], ids[2]);
+            assert!(data.axial_member[housing].is_none());
+            let rider = |j: usize| data.axial_member[j].map(|rc| (rc.kind, rc.carrier, rc.rider));
+            assert_eq!(rider(nut), Some((AxialKind::Slider, housing, true)));
+            let expect = round_rotor.then_some((AxialKind::Screw, housing, true));
+            assert_eq!(rider(rotor), expect);
+            let carried = data.carried[housing].as_ref().expect("carrier");
+            let base = if round_rotor { 0.3 } else { 0.2 };
+            assert!((carried.base.mass() - base).abs() < 1e-15);
+            assert_eq!(carried.riders.len(), if round_rotor { 2 } else { 1 });
         }
     }
 

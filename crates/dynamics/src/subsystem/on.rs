@@ -10,7 +10,7 @@
 //! `P_S = -M_S^-1 B_S`, `p_S = M_S^-1 (Q_S - f_S)`,
 //! `K_S = sum C-hat^T M-hat C-hat - B_S^T M_S^-1 B_S`, `k_S = B_S^T p_S + sum C-hat^T (M-hat b-hat - f-hat)`.
 
-use super::axial::AxialKind;
+use super::axial::{AxialKind, Carried};
 use super::chol::{cholesky, solve};
 pub(crate) use super::rigid::add_rigid_congruence;
 use super::rigid::Axisymmetric;
@@ -136,6 +136,9 @@ fn backward_n<const N: usize>(
     let kinds = sub.rigid_member.iter().zip(&sub.axisymmetric_member);
     for (m, (&j, (&rigid, &axisymmetric))) in sub.members.iter().zip(kinds).enumerate() {
         if let Some(rc) = &data.axial_member[j] {
+            if rc.rider {
+                continue; // Lumped into its carrier (below).
+            }
             // Axial member: its C^T (M b - f) already in the parent frame (in `fbar`).
             let h = data.fbar[j];
             let sh = rc.s.dot(&h);
@@ -170,7 +173,10 @@ fn backward_n<const N: usize>(
             continue;
         }
         let m = &data.mbar[j];
-        let inertia = &model.bodies[j].inertia;
+        let carried = data.carried[j].as_ref();
+        let lumped = carried.map(|cr| cr.lumped(model, data));
+        let inertia = lumped.as_ref().unwrap_or(&model.bodies[j].inertia);
+        let axisymmetric = carried.map_or(axisymmetric, |cr| cr.axisymmetric);
         let ((cj, bj), jj, fj) = (
             hat_transform_bias(model, data, s, j),
             &data.jbar[j],
@@ -187,6 +193,10 @@ fn backward_n<const N: usize>(
             (false, true) => add_member(on, n, jj, cj, bj, fj, |a| inertia.apply(a)),
             (false, false) => add_member(on, n, jj, cj, bj, fj, |a| m.apply(a)),
         };
+        if let Some(cr) = carried {
+            let on = (&mut ms, &mut bs, &mut rhs);
+            add_riders(on, n, (model, data), cr, (jj, cj, bj));
+        }
         if sub.parent.is_some() {
             if rigid {
                 add_rigid_congruence(inertia, cj, &mut kc);
@@ -251,6 +261,47 @@ fn add_member<const N: usize>(
         rhs[c] -= jj[c].dot(&hat_f);
     }
     hat_f
+}
+
+/// Adds the riders' own columns of (2.76) for a carrier member with `J-hat`, `C-hat`, `b-hat`
+/// = `(jj, cj, bj)` whose lumped inertia [`add_member`] applied: rider `r` moves with the
+/// carrier plus `s rho_r qdot`, so with `u = K s` (carrier frame) it adds
+/// `J_r . u rho_c + rho_r J_c . u + rho_r rho_c s^T K s` to `M_S`, `C-hat^T u rho_c` to `B_S`
+/// and `-rho_c (u . b-hat + s . h)` to the right-hand side (`h` its bias, in `fbar`).
+#[inline(always)]
+fn add_riders<const N: usize>(
+    (ms, bs, rhs): (&mut [[f64; N]; N], &mut [Force; N], &mut [f64; N]),
+    n: usize,
+    (model, data): (&Model, &Data),
+    carried: &Carried,
+    (jj, cj, bj): (&[Motion; MAX], &SpatialTransform, &Motion),
+) {
+    for &(r, mr) in &carried.riders {
+        let sub_columns = &model.subsystems[carried.subsystem].columns[mr];
+        let Some(rc) = &data.axial_member[r] else {
+            continue;
+        };
+        let (u, sks) = (rc.ks, rc.sks);
+        let mut rho = [0.0; N];
+        let row = &data.axial_motion[r].row;
+        let inputs = model.bodies[r].v_set.len();
+        for (&c, &x) in sub_columns.iter().zip(row).take(inputs) {
+            rho[c] += x;
+        }
+        let e = bj.dot(&u) + rc.s.dot(&data.fbar[r]);
+        let cu = cj.tr_apply_force(&u);
+        let mut ju = [0.0; N];
+        for c in 0..n {
+            ju[c] = jj[c].dot(&u);
+        }
+        for c in 0..n {
+            bs[c] += cu * rho[c];
+            rhs[c] -= rho[c] * e;
+            for k in c..n {
+                ms[k][c] += ju[k] * rho[c] + rho[k] * ju[c] + rho[k] * rho[c] * sks;
+            }
+        }
+    }
 }
 
 /// Second forward step of sub-system `s` (Algorithm 2.4, (2.90)): `qddot_S = P_S a_p + p_S`

@@ -56,7 +56,12 @@ pub(super) fn dynamic_first_pass(
     for k in 0..data.axial_members.len() {
         let i = data.axial_members[k];
         if let Some(rc) = &data.axial_member[i] {
-            data.fbar[i] = rotor_bias(model, data, i, rc, fext)?;
+            let h = rotor_bias(model, data, i, rc, fext)?;
+            data.fbar[i] = h;
+            if rc.rider {
+                // Lumped into the carrier: f-hat = M b - f gains the rider's h.
+                data.fbar[rc.carrier] -= h;
+            }
         }
     }
     for s in 0..model.subsystems.len() {
@@ -67,7 +72,7 @@ pub(super) fn dynamic_first_pass(
     Ok(())
 }
 
-/// `C^T (M b - f)` of spin-invariant rotor `i` in its parent's frame, including its external
+/// `C^T (M b - f)` of axial member `i` in its carrier's frame, including its external
 /// wrench (given in the spun rotor frame, so only then is the spin angle evaluated).
 #[inline]
 fn rotor_bias(
@@ -79,7 +84,7 @@ fn rotor_bias(
 ) -> Result<Force, DynamicsError> {
     let body = &model.bodies[i];
     let (w, g) = match body.parent {
-        Some(p) => (data.vel[p].ang, data.gravity_body[p]),
+        Some(_) => (data.vel[rc.carrier].ang, data.gravity_body[rc.carrier]),
         None => (Vector3::zeros(), model.gravity),
     };
     let mut h = parent_frame_bias(rc, &w, &g, rc.state(data, i));
@@ -98,6 +103,11 @@ fn rotor_bias(
             "external wrench on a rotor with a non-finite spin angle",
         ));
     };
-    h -= x.tr_apply_force(&f);
+    let f = x.tr_apply_force(&f);
+    // A rider's wrench moves on from the common parent into its carrier's frame.
+    h -= match rc.rider {
+        true => data.x[rc.carrier].inv_tr_apply_force(&f),
+        false => f,
+    };
     Ok(h)
 }

@@ -5,7 +5,7 @@ use super::closure::KneeClosure;
 use super::{KneeCoupling, KneePart, NAME};
 use crate::mechanism::cache::LoopSlots;
 use crate::mechanism::jet::input_arrays;
-use crate::mechanism::{MechanismError, RelativeMotion};
+use crate::mechanism::{AxialMotion, MechanismError, RelativeMotion};
 
 /// Closed knee loops of the last kinematics pass, keyed by drive identity and exact knee angle (see
 /// [`crate::mechanism::cache`]): the three parts (housing, nut, rotor) of one drive share one loop
@@ -23,13 +23,49 @@ impl KneeCoupling {
         cache: &mut Option<KneeLoopCache>,
     ) -> Result<RelativeMotion, MechanismError> {
         let ([q], [qd]) = input_arrays::<1>(NAME, q_in, qd_in)?;
+        let closure = self.closure_cached(q, cache)?;
+        Ok(self.drive.part_motion(self.part, closure, qd))
+    }
+
+    /// Spin of the rotor (`N_screw l + offset`, (3.3)) or travel of the nut (`l`, (3.4))
+    /// relative to the housing, with rows and rates from (3.5)-(3.6), from `cache` like
+    /// [`Self::relative_cached`]; `None` for the housing.
+    pub(crate) fn axial_motion_cached(
+        &self,
+        q_in: &[f64],
+        qd_in: &[f64],
+        cache: &mut Option<KneeLoopCache>,
+    ) -> Result<Option<AxialMotion>, MechanismError> {
+        let drive = &self.drive;
+        let (n, offset) = match self.part {
+            KneePart::Rotor => (drive.screw_ratio(), drive.params.motor_offset),
+            KneePart::Nut => (1.0, 0.0),
+            KneePart::Housing => return Ok(None),
+        };
+        let ([q], [qd]) = input_arrays::<1>(NAME, q_in, qd_in)?;
+        let c = self.closure_cached(q, cache)?;
+        Ok(Some(AxialMotion {
+            travel: n * c.l + offset,
+            row: [n * c.l_q, 0.0, 0.0],
+            speed: n * c.l_q * qd,
+            bias: n * c.l_qq * qd * qd,
+        }))
+    }
+
+    /// This drive's loop closed at knee angle `q`: from `cache` when it holds it, else closed
+    /// and stored there.
+    #[inline(always)]
+    fn closure_cached<'c>(
+        &self,
+        q: f64,
+        cache: &'c mut Option<KneeLoopCache>,
+    ) -> Result<&'c KneeClosure, MechanismError> {
         let slots = &mut cache.get_or_insert_with(KneeLoopCache::default).0;
         let drive = &self.drive;
-        let closure = match slots.find(|&(id, x)| id == drive.id && x == q) {
-            Some(c) => c,
-            None => slots.store_with((drive.id, q), |c| drive.solve_into(q, c))?,
-        };
-        Ok(drive.part_motion(self.part, closure, qd))
+        match slots.position(|&(id, x)| id == drive.id && x == q) {
+            Some(i) => Ok(slots.value(i)),
+            None => slots.store_with((drive.id, q), |c| drive.solve_into(q, c)),
+        }
     }
 
     /// Part-frame z row of this part's relative Jacobian at `q_in` (for the rotor the motor
