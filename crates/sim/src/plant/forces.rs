@@ -9,14 +9,16 @@
 //! [`Plant::state_outputs`] (the sensors' sample) runs the same first half, the state pass:
 //! the kinematics it leaves in the plant's workspace serve the recorder (CoM, `h_G`) and are
 //! reused by the first Runge-Kutta stage at that state (`forward_dynamics_kinematics` skips a
-//! pass at the `(q, v)` it holds). [`Plant::outputs`] (contact and drive outputs for other
+//! pass at the `(q, v)` it holds), and so are its contact forces and bristle rates
+//! ([`ContactMemo`]: the contact layer depends on `q`, `v` and the bristle states only, not on
+//! the command the controller sets in between). [`Plant::outputs`] (contact and drive outputs for other
 //! users) takes the foot states from each foot's own joint chain
 //! ([`crate::contact::BodyChain`]) instead, cheaper than a pass over all bodies when nothing
 //! else reads it; its motor rows miss the loop caches and close the loops once. `tests/sim_fastpath.rs` checks both routes
 //! against a reference assembled from the general parts (chains, rows re-evaluated from the
 //! mechanisms, `forward_dynamics` in one call).
 
-use super::{Plant, PlantOutputs};
+use super::{Plant, PlantOutputs, StateLayout};
 use crate::drive::DriveMode;
 use crate::error::{finite, SimError};
 use biped_dynamics::{forward_dynamics_kinematics, forward_dynamics_solve};
@@ -29,6 +31,7 @@ impl Plant {
     /// dynamics call, the plant's workspace untouched); the contact-state rates computed on the
     /// way are discarded.
     pub fn outputs(&mut self, z: &[f64]) -> Result<&PlantOutputs, SimError> {
+        self.contact_memo.clear();
         self.with_scratch(z, Self::chain_forces)
     }
 
@@ -37,7 +40,14 @@ impl Plant {
     /// right-hand side at `z` gives. The pass stays in [`Self::data`] for readers (CoM,
     /// momentum) and for the next right-hand side at `z`, which reuses it.
     pub fn state_outputs(&mut self, z: &[f64]) -> Result<&PlantOutputs, SimError> {
-        self.with_scratch(z, Self::pass_forces)
+        self.contact_memo.clear();
+        let mut scratch = std::mem::take(&mut self.scratch);
+        let r = self.pass_forces(z, &mut scratch);
+        if r.is_ok() {
+            self.contact_memo.store(self.layout, z, &scratch);
+        }
+        self.scratch = scratch;
+        r.map(|_| &self.out)
     }
 
     /// Runs `forces` at `z` with the scratch rate buffer; the outputs.
@@ -128,16 +138,20 @@ impl Plant {
         let l = self.layout;
         forward_dynamics_kinematics(&self.model, &mut self.data, &self.q, &self.v)?;
         let (s, sdot) = (&z[l.contact()], &mut zdot[l.contact()]);
-        let out = &mut self.out.contact;
-        self.contact
-            .evaluate_from(&self.data, s, sdot, &mut self.fext, out);
+        if !self.contact_memo.recall(l, z, sdot) {
+            let out = &mut self.out.contact;
+            self.contact
+                .evaluate_from(&self.data, s, sdot, &mut self.fext, out);
+        }
         self.drive_forces(z, zdot)
     }
 
     /// The right-hand side with typed errors (one kinematics pass, see the module docs).
     pub(super) fn eval(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
         self.rhs_count += 1;
-        self.pass_forces(z, zdot)?;
+        let r = self.pass_forces(z, zdot);
+        self.contact_memo.clear();
+        r?;
         let l = self.layout;
         let (m, algo) = (&self.model, self.config.algorithm);
         let ddq = forward_dynamics_solve(m, &mut self.data, &self.tau, Some(&self.fext), algo)?;
@@ -145,5 +159,48 @@ impl Plant {
         zdot[l.v()].copy_from_slice(ddq.as_slice());
         self.qdot.qdot(&z[l.q()], &z[l.v()], &mut zdot[l.q()]);
         Ok(())
+    }
+}
+
+/// The contact layer's result at the last state pass ([`Plant::state_outputs`]), recalled by
+/// the next right-hand side at bitwise the same `q`, `v` and bristle states (the first
+/// Runge-Kutta stage after a sensor sample) instead of evaluating the 16 points again. Its
+/// forces are still in the plant's `fext` and outputs: every other writer of them clears it.
+#[derive(Debug, Clone, Default)]
+pub(super) struct ContactMemo {
+    /// `[q | v | s]` of the state pass; empty when cleared.
+    key: Vec<f64>,
+    /// The bristle rates computed there.
+    rates: Vec<f64>,
+}
+
+impl ContactMemo {
+    /// Forgets the stored result (keeps the buffers).
+    pub(super) fn clear(&mut self) {
+        self.key.clear();
+    }
+
+    /// Stores the key of `z` and the bristle rates of `zdot` (no allocation after the first).
+    fn store(&mut self, l: StateLayout, z: &[f64], zdot: &[f64]) {
+        let c = l.contact();
+        self.key.clear();
+        self.key.extend_from_slice(&z[..c.end]);
+        self.rates.clear();
+        self.rates.extend_from_slice(&zdot[c]);
+    }
+
+    /// Writes the stored rates into `sdot` if `z` has the stored key; false otherwise.
+    fn recall(&self, l: StateLayout, z: &[f64], sdot: &mut [f64]) -> bool {
+        let key = &z[..l.contact().end];
+        let same = self.key.len() == key.len()
+            && self
+                .key
+                .iter()
+                .zip(key)
+                .all(|(a, b)| a.to_bits() == b.to_bits());
+        if same {
+            sdot.copy_from_slice(&self.rates);
+        }
+        same
     }
 }

@@ -108,6 +108,8 @@ pub struct Plant {
     rows: Vec<Option<MotorRow>>,
     out: PlantOutputs,
     scratch: Vec<f64>,
+    /// Contact result of the last state pass for the next right-hand side at that state.
+    contact_memo: forces::ContactMemo,
     rhs_count: u64,
 }
 
@@ -177,6 +179,7 @@ impl Plant {
             contact,
             out,
             scratch: vec![0.0; layout.dim()],
+            contact_memo: forces::ContactMemo::default(),
             rhs_count: 0,
         })
     }
