@@ -133,24 +133,45 @@ impl RigidInertia {
     }
 
     /// Sum with `other` translated by `offset` (same axes, no rotation): the carrier-frame
-    /// inertia of a body plus a part sliding along an axis of its frame.
+    /// inertia of a body plus a part sliding along an axis of its frame. Summed about the
+    /// origin (`h = sum m c`, `I_O = sum I_c + m (|c|^2 E - c c^T)`), then moved to the joint
+    /// CoM `h / m` (symmetric entries formed once; no validation, both are valid inertias).
     #[inline]
     pub(crate) fn add_shifted(&self, other: &RigidInertia, offset: &Vector3<f64>) -> Self {
-        let (m1, m2) = (self.mass, other.mass);
-        let mass = m1 + m2;
+        let m2 = other.mass;
+        let mass = self.mass + m2;
         let c2 = other.com + offset;
+        let h = self.h + c2 * m2;
+        // I_O = I_O1 + I_c2 + m2 (|c2|^2 E - c2 c2^T), and I_c = I_O - (|h|^2 E - h h^T) / m.
+        let inv = if mass > 0.0 { 1.0 / mass } else { 0.0 };
+        let (n2, nh) = (c2.norm_squared() * m2, h.norm_squared() * inv);
+        let sym = |i: usize, j: usize| {
+            let d = if i == j { 1.0 } else { 0.0 };
+            let io = self.inertia_origin[(i, j)] + other.inertia_com[(i, j)] + d * n2
+                - m2 * c2[i] * c2[j];
+            (io, io - d * nh + h[i] * h[j] * inv)
+        };
+        let mut inertia_origin = Matrix3::zeros();
+        let mut inertia_com = Matrix3::zeros();
+        for i in 0..3 {
+            for j in i..3 {
+                let (io, ic) = sym(i, j);
+                (inertia_origin[(i, j)], inertia_origin[(j, i)]) = (io, io);
+                (inertia_com[(i, j)], inertia_com[(j, i)]) = (ic, ic);
+            }
+        }
         let com = if mass > 0.0 {
-            (self.h + c2 * m2) / mass
+            h * inv
         } else {
             (self.com + c2) * 0.5
         };
-        let shift = |m: f64, d: Vector3<f64>| {
-            let s = skew(&d);
-            -(s * s) * m
-        };
-        let inertia =
-            self.inertia_com + shift(m1, self.com - com) + other.inertia_com + shift(m2, c2 - com);
-        Self::from_parts(mass, com, inertia)
+        Self {
+            mass,
+            com,
+            inertia_com,
+            h,
+            inertia_origin,
+        }
     }
 
     /// `M a` for the 6x6 mass matrix of (2.22): `[I_O w + h x v; m v - h x w]`.
@@ -202,5 +223,48 @@ impl RigidInertia {
     /// Dense 6x6 matrix `M` of (2.22).
     pub fn to_matrix(&self) -> Matrix6<f64> {
         self.to_articulated().to_matrix()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Translation3;
+    use proptest::prelude::*;
+
+    /// A valid inertia from a mass, a CoM and a diagonal plus a small product of inertia.
+    fn body(m: f64, c: [f64; 3], d: [f64; 3], off: f64) -> RigidInertia {
+        let mut ic = Matrix3::from_diagonal(&Vector3::from(d));
+        (ic[(0, 1)], ic[(1, 0)]) = (off, off);
+        RigidInertia::new(m, Vector3::from(c), ic).expect("valid")
+    }
+
+    proptest! {
+        /// The carrier-plus-slider sum equals `merged` with the translation (its general
+        /// formula) in every cached quantity, exactly symmetric.
+        #[test]
+        fn add_shifted_equals_merged(
+            (m1, m2) in (0.0f64..3.0, 0.0f64..2.0),
+            c1 in prop::array::uniform3(-0.3f64..0.3),
+            c2 in prop::array::uniform3(-0.3f64..0.3),
+            d1 in prop::array::uniform3(0.01f64..0.02),
+            d2 in prop::array::uniform3(0.01f64..0.02),
+            off in -0.002f64..0.002,
+            shift in prop::array::uniform3(-0.5f64..0.5),
+        ) {
+            let (a, b) = (body(m1, c1, d1, off), body(m2, c2, d2, -off));
+            let t = Vector3::from(shift);
+            let fast = a.add_shifted(&b, &t);
+            let reference = a.merged(&b, &Isometry3::from_parts(Translation3::from(t), Default::default()));
+            let close = |x: &Matrix3<f64>, y: &Matrix3<f64>| (x - y).amax() <= 1e-13;
+            prop_assert!((fast.mass - reference.mass).abs() <= 1e-15);
+            prop_assert!((fast.h - reference.h).amax() <= 1e-14);
+            prop_assert!(close(&fast.inertia_origin, &reference.inertia_origin));
+            prop_assert_eq!(fast.inertia_com, fast.inertia_com.transpose());
+            if fast.mass > 1e-3 {
+                prop_assert!((fast.com - reference.com).amax() <= 1e-12);
+                prop_assert!(close(&fast.inertia_com, &reference.inertia_com));
+            }
+        }
     }
 }
