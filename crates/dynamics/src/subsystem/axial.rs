@@ -80,6 +80,8 @@ pub(crate) struct AxialMember {
     pub(crate) com: Vector3<f64>,
     /// Rotational inertia about the CoM in parent axes (constant).
     pub(crate) inertia_com: Matrix3<f64>,
+    /// `u = I_c s.ang`, the spin's angular momentum per unit of `qd` (parent axes).
+    pub(crate) spin_momentum: Vector3<f64>,
     /// Velocity index of the driving coordinate (the first input's for a coupled part).
     pub(crate) v_index: usize,
     /// The body whose frame carries the axis: the sub-system's parent, or for a rider the
@@ -158,9 +160,12 @@ impl AxialMember {
 /// [`AxialMember::state`]: a rotor's CoM is fixed in the parent and its rate is
 /// `w_R = w_p + s.ang qd`, so `F = m (w_p x (w_p x c) - g_p)`, and its inertia `I_c` is constant
 /// in parent axes, so `dL/dt = I_c s.ang sigma + w_p x (I_c w_R)` (the derivative of
-/// `L = I_c w_R` in the parent's rotating axes); a slider moving along `e = s.lin` adds the
-/// Coriolis and travel terms `m (2 w_p x e qd + e sigma)` to `F` and turns with the parent
-/// (`w_R = w_p`). The moment about the parent origin adds `c x F`.
+/// `L = I_c w_R` in the parent's rotating axes); the moment about the parent origin adds
+/// `c x F`, which with the constant `I_O = I_c + m (|c|^2 E - c c^T)` (the angular block of
+/// `K`), `h = m c` and `u = I_c s.ang` sums to `w_p x (I_O w_p + qd u) + sigma u - h x g_p`
+/// (the body force (2.56) about the parent origin plus the spin terms). A slider moving along
+/// `e = s.lin` adds the Coriolis and travel terms `m (2 w_p x e qd + e sigma)` to `F` and turns
+/// with the parent (`w_R = w_p`).
 #[inline]
 pub(crate) fn parent_frame_bias(
     rc: &AxialMember,
@@ -168,18 +173,17 @@ pub(crate) fn parent_frame_bias(
     g_p: &Vector3<f64>,
     (c, qd, sigma): (Vector3<f64>, f64, f64),
 ) -> Force {
-    let w = w_p + rc.s.ang * qd;
-    let mut a = w_p.cross(&w_p.cross(&c)) - g_p;
+    let m = rc.mass;
     if rc.kind == AxialKind::Slider {
         let e = &rc.s.lin;
-        a += w_p.cross(e) * (2.0 * qd) + e * sigma;
+        let a = w_p.cross(&w_p.cross(&c)) - g_p + w_p.cross(e) * (2.0 * qd) + e * sigma;
+        let f = a * m;
+        return Force::new(w_p.cross(&(rc.inertia_com * w_p)) + c.cross(&f), f);
     }
-    let f = a * rc.mass;
-    let mut n = w_p.cross(&(rc.inertia_com * w)) + c.cross(&f);
-    if rc.kind == AxialKind::Screw {
-        n += rc.inertia_com * (rc.s.ang * sigma);
-    }
-    Force::new(n, f)
+    let (h, u) = (c * m, &rc.spin_momentum);
+    let l = rc.congruence.ang * w_p + u * qd;
+    let n = w_p.cross(&l) + u * sigma - h.cross(g_p);
+    Force::new(n, w_p.cross(&w_p.cross(&h)) - g_p * m)
 }
 
 /// Per body: the parent-frame data of an axial member (see the module doc), `None` for every
@@ -241,6 +245,7 @@ pub(crate) fn axial_members(
             out[j] = congruence.map(|congruence| {
                 let s = frame.inv_apply_motion(&column);
                 let com = frame.rot.tr_mul(&body.inertia.com()) + frame.trans;
+                let inertia_com = sym_congruence(&body.inertia.inertia_about_com(), &frame.rot);
                 let mass = body.inertia.mass();
                 // A slider's `K s = [h x e; m e]` does not change with its travel `l` along
                 // `e`: `h = m (c + e l)` and `e x e = 0`.
@@ -260,7 +265,8 @@ pub(crate) fn axial_members(
                     s,
                     mass,
                     com,
-                    inertia_com: sym_congruence(&body.inertia.inertia_about_com(), &frame.rot),
+                    inertia_com,
+                    spin_momentum: inertia_com * s.ang,
                     v_index: body.v_set.as_slice()[0],
                     rider: Some(carrier) != sub.parent,
                     carrier,
