@@ -7,7 +7,7 @@ use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::model::{Body, JointModel};
 use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, SpatialTransform};
-use crate::subsystem::axial::{axial_members, carriers, AxialMember, Carried};
+use crate::subsystem::axial::{axial_members, carriers, AxialKind, AxialMember, Carried};
 use crate::subsystem::link::{link_rotor_subsystems, LinkRotors};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
 use crate::Model;
@@ -101,9 +101,12 @@ pub struct Data {
     pub(crate) massless_leaf: Vec<bool>,
     /// Per sub-system: the constants of a one-link-with-rotors sub-system ([`crate::subsystem::link`]).
     pub(crate) link_rotors: Vec<Option<LinkRotors>>,
-    /// Per body: whether the O(n) passes read `mbar` (false for rigid sub-system members, whose
-    /// `M-hat` is applied from the rigid-body inertia directly).
-    pub(crate) mbar_needed: Vec<bool>,
+    /// Per body: the start value of `mbar` in the O(n) passes, `M_i` plus the constant
+    /// parent-frame `K` of the axial rotors of the sub-systems it is the parent of (their
+    /// share of (2.76) added once here, not per call); `None` where the passes never read
+    /// `mbar` (rigid sub-system members, whose `M-hat` is applied from the rigid-body inertia
+    /// directly, and massless leaves).
+    pub(crate) mbar_init: Vec<Option<ArticulatedInertia>>,
     /// Coordinate axis (0, 1, 2) of a revolute joint whose placement is a pure translation, so
     /// that `C_i` rotates about that axis ([`ArticulatedInertia::add_tr_transform_axis_to`]), per body.
     pub(crate) plane_axis: Vec<Option<usize>>,
@@ -136,13 +139,13 @@ pub struct Data {
     pub(crate) factor: DMatrix<f64>,
 }
 
-/// Per body: false for rigid sub-system members (see [`Data::mbar_needed`]), except the link
-/// of a link-with-rotors sub-system, whose step reads `mbar`, and for massless leaves.
-fn mbar_needed(
+/// [`Data::mbar_init`]: `None` for rigid sub-system members, except the link of a
+/// link-with-rotors sub-system, whose step reads `mbar`, and for massless leaves.
+fn mbar_init(
     model: &Model,
     axial_member: &[Option<AxialMember>],
     massless_leaf: &[bool],
-) -> Vec<bool> {
+) -> Vec<Option<ArticulatedInertia>> {
     let mut needed: Vec<bool> = massless_leaf.iter().map(|m| !m).collect();
     for sub in &model.subsystems {
         for (&j, &rigid) in sub.members.iter().zip(&sub.rigid_member) {
@@ -152,7 +155,19 @@ fn mbar_needed(
     for lr in link_rotor_subsystems(model, axial_member).iter().flatten() {
         needed[lr.link] = true;
     }
-    needed
+    let mut init: Vec<Option<ArticulatedInertia>> = (model.bodies.iter().zip(needed))
+        .map(|(b, needed)| needed.then(|| b.inertia.to_articulated()))
+        .collect();
+    for sub in &model.subsystems {
+        let Some(p) = sub.parent else { continue };
+        for &j in &sub.members {
+            let constant = axial_member[j].filter(|rc| !rc.rider && rc.kind != AxialKind::Slider);
+            if let (Some(rc), Some(m)) = (constant, init[p].as_mut()) {
+                *m += rc.congruence;
+            }
+        }
+    }
+    init
 }
 
 /// Per body: fixed joint, zero inertia and no children (see [`Data::massless_leaf`]).
@@ -244,7 +259,7 @@ impl Data {
             sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
             link_rotors: link_rotor_subsystems(model, &axial_member),
-            mbar_needed: mbar_needed(model, &axial_member, &massless_leaf),
+            mbar_init: mbar_init(model, &axial_member, &massless_leaf),
             massless_leaf,
             axial_members: (0..n).filter(|&i| axial_member[i].is_some()).collect(),
             carried: carriers(model, &axial_member),

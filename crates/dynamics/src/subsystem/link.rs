@@ -5,14 +5,15 @@
 //! With the link's `U = M-bar J`, `f-hat = M-bar b - f-bar` (link frame) and the rotors'
 //! constants ([`super::axial`]) summed, `M_S = J^T U + sum s^T K s` (a scalar `D`),
 //! `B_S = C^T U + sum K s` (parent frame), `p_S = (Q - J^T f-hat - sum s . h) / D` with the
-//! rotors' parent-frame `h = C^T (M b - f)`, `K_S = C^T M-bar C + sum K - B_S B_S^T / D` and
+//! rotors' parent-frame `h = C^T (M b - f)`, `K_S = C^T M-bar C + sum K - B_S B_S^T / D` (the
+//! constant `sum K` is in the parent's start value `Data::mbar_init`) and
 //! `k_S = C^T f-hat + sum h + B_S p_S`. No member kinematics (2.77)-(2.79) are formed: the
 //! link's `C-hat`, `J-hat`, `b-hat` are its own `C`, `J`, `b`.
 
 use super::axial::AxialKind;
 use super::on::add_rigid_congruence;
 use crate::model::joint::Joint;
-use crate::spatial::{plane, ArticulatedInertia, Force, JointAxis, Motion};
+use crate::spatial::{plane, Force, JointAxis, Motion};
 use crate::{Data, DynamicsError, Model};
 use nalgebra::DVector;
 
@@ -34,8 +35,6 @@ pub(crate) struct LinkRotors {
     rotors: [(usize, Motion); MAX_LINK_ROTORS],
     /// Number of rotors.
     nrotors: usize,
-    /// `sum K` of the rotors (parent frame).
-    pub(crate) congruence: ArticulatedInertia,
     /// `sum K s` of the rotors.
     pub(crate) ks: Force,
     /// `sum s^T K s` of the rotors.
@@ -82,7 +81,6 @@ pub(crate) fn link_rotor_subsystems(
             rotors: [(0, Motion::zero()); MAX_LINK_ROTORS],
             nrotors: 0,
             rigid,
-            congruence: ArticulatedInertia::zero(),
             ks: Force::zero(),
             sks: 0.0,
         };
@@ -92,7 +90,6 @@ pub(crate) fn link_rotor_subsystems(
             };
             out.rotors[out.nrotors] = (j, rc.s);
             out.nrotors += 1;
-            out.congruence += rc.congruence;
             out.ks += rc.ks;
             out.sks += rc.sks;
         }
@@ -149,7 +146,7 @@ pub(crate) fn backward(
         (false, Some(axis)) => m.add_tr_transform_axis_to(axis, x, out),
         (false, None) => m.add_tr_transform_to(x, out),
     }
-    out.add_sub_outer(&lr.congruence, &b, dinv);
+    out.sub_outer(&b, dinv); // The rotors' sum K is in the parent's `mbar_init`.
     data.fbar[parent] -= k;
     Ok(())
 }

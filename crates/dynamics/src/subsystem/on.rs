@@ -149,7 +149,7 @@ fn backward_n<const N: usize>(
                     ms[c][c] += rc.sks;
                     bs[c] += rc.ks;
                     rhs[c] -= sh;
-                    kc += rc.congruence;
+                    // Its constant K is in the parent's `mbar` from the start (`mbar_init`).
                 }
                 // Column c of J-hat is s rho_c (see `super::axial`).
                 AxialKind::Screw | AxialKind::Slider => {
@@ -166,7 +166,9 @@ fn backward_n<const N: usize>(
                             }
                         }
                     }
-                    kc += k;
+                    if rc.kind == AxialKind::Slider {
+                        kc += k; // A rotor's constant K is in `mbar_init`.
+                    }
                 }
             }
             fc += h;

@@ -40,16 +40,16 @@ pub(super) fn dynamic_first_pass(
         .bodies
         .iter()
         .zip(&data.axial_member)
-        .zip(&data.mbar_needed);
+        .zip(&data.mbar_init);
     let state = data.gravity_body.iter().zip(&data.vel);
     let out = data.mbar.iter_mut().zip(data.fbar.iter_mut());
-    for (i, (((body, rc), &needed), ((g, vel), (mbar, fbar)))) in
+    for (i, (((body, rc), init), ((g, vel), (mbar, fbar)))) in
         bodies.zip(state.zip(out)).enumerate()
     {
         if rc.is_none() {
             *fbar = force_of(&body.inertia, g, &vel.ang, fext, i);
-            if needed {
-                *mbar = body.inertia.to_articulated();
+            if let Some(init) = init {
+                *mbar = *init;
             }
         }
     }
