@@ -4,18 +4,38 @@ use biped_control::pattern::WalkingPattern;
 use biped_control::walk::{walk_pattern_params, Method, WalkController, WalkParams};
 use biped_robots::lola::{self, LolaType};
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::cell::Cell;
 
+/// System allocator that counts the allocations of the calling thread (the test harness
+/// allocates on its own threads, more so under load).
 struct Counting;
-static ALLOCS: AtomicUsize = AtomicUsize::new(0);
+
+thread_local! {
+    /// Allocations and reallocations made by this thread.
+    static ALLOCS: Cell<usize> = const { Cell::new(0) };
+}
+
+/// Counts one allocation on this thread (no-op while the thread is torn down).
+fn bump() {
+    let _ = ALLOCS.try_with(|c| c.set(c.get() + 1));
+}
+
+/// Allocations made by this thread so far.
+fn allocations() -> usize {
+    ALLOCS.with(Cell::get)
+}
 
 unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCS.fetch_add(1, Ordering::SeqCst);
-        unsafe { System.alloc(layout) }
+    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
+        bump();
+        unsafe { System.alloc(l) }
     }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { System.dealloc(ptr, layout) }
+    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
+        unsafe { System.dealloc(p, l) }
+    }
+    unsafe fn realloc(&self, p: *mut u8, l: Layout, n: usize) -> *mut u8 {
+        bump();
+        unsafe { System.realloc(p, l, n) }
     }
 }
 
@@ -33,11 +53,11 @@ fn cycle_does_not_allocate() {
         for s in &samples[..1500] {
             ctrl.cycle(s, 1e-3).unwrap();
         }
-        let before = ALLOCS.load(Ordering::SeqCst);
+        let before = allocations();
         for s in &samples[1500..1600] {
             ctrl.cycle(s, 1e-3).unwrap();
         }
-        let n = ALLOCS.load(Ordering::SeqCst) - before;
+        let n = allocations() - before;
         assert_eq!(n, 0, "{method}: {n} allocations in 100 cycles");
     }
 }
