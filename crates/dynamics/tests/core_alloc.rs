@@ -3,45 +3,13 @@
 
 mod core_support;
 
+use biped_alloc_count::{allocations, Counting};
 use biped_dynamics::{
     center_of_mass, forward_dynamics, forward_kinematics, inverse_dynamics, mass_matrix, on,
     Algorithm, Centroidal, Data, Force, JacobianFrame, Jacobians,
 };
 use core_support::*;
 use nalgebra::{DMatrix, DVector, Vector3};
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
-
-/// System allocator that counts allocations of the calling thread (tests run in parallel).
-struct Counting;
-
-thread_local! {
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-
-/// Count one allocation on this thread (no-op while the thread is being torn down).
-fn count() {
-    let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
-}
-
-/// Allocations made by this thread so far.
-fn allocations() -> usize {
-    ALLOCATIONS.with(Cell::get)
-}
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        count();
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { System.dealloc(ptr, layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        count();
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
 
 #[global_allocator]
 static GLOBAL: Counting = Counting;
