@@ -16,6 +16,18 @@ fn residual(c: &PreviewController) -> f64 {
     (rhs - p).abs().max() / p.abs().max()
 }
 
+/// The independent residual is below 1e-10 and the closed loop is stable.
+fn assert_stabilising(c: &PreviewController, what: &str) {
+    let res = residual(c);
+    assert!(res < 1e-10, "{what}: residual {res:e}");
+    let rho = c
+        .closed_loop()
+        .complex_eigenvalues()
+        .map(|z| z.norm())
+        .max();
+    assert!(rho < 1.0, "{what}: closed loop rho {rho}");
+}
+
 #[test]
 fn dare_residual_vanishes_for_control_periods() {
     for dt in [0.001, 0.002, 0.005, 0.01, 0.02] {
@@ -51,15 +63,46 @@ fn dare_is_solved_at_short_periods_with_small_input_weight() {
         ] {
             let c = PreviewController::new(H, G, dt, (qe, 0.0, r), 10)
                 .unwrap_or_else(|e| panic!("dt {dt} qe {qe} r {r}: {e}"));
-            let res = residual(&c);
-            assert!(res < 1e-10, "dt {dt} qe {qe} r {r}: residual {res:e}");
-            let rho = c
-                .closed_loop()
-                .complex_eigenvalues()
-                .map(|z| z.norm())
-                .max();
-            assert!(rho < 1.0, "dt {dt} qe {qe} r {r}: closed loop rho {rho}");
+            assert_stabilising(&c, &format!("dt {dt} qe {qe} r {r}"));
         }
+    }
+}
+
+/// Only the ZMP error weighted (`Q` singular) with small input weights: unbalanced, the
+/// doubling overflowed at these settings and no fallback recovered (the first seven from a
+/// 672-point grid in a baseline x86-64 build, the last four from random settings in this
+/// workspace's FMA build; which settings fail depends on rounding); the balanced retry solves
+/// each, and the independent residual and the closed loop check the result.
+#[test]
+fn dare_is_solved_with_singular_q_and_tiny_input_weight() {
+    for (dt, qe, r) in [
+        (0.0015, 1.0, 1e-10),
+        (0.0015, 10.0, 1e-8),
+        (0.0015, 100.0, 1e-9),
+        (0.005, 10.0, 1e-10),
+        (0.005, 100.0, 1e-8),
+        (0.005, 100.0, 1e-7),
+        (0.02, 1.0, 1e-10),
+        (0.012447151732843723, 1.70006633303901, 1.968753254333172e-7),
+        (
+            0.0008140926002247266,
+            0.267486238895668,
+            7.569340360925962e-8,
+        ),
+        (
+            0.00607299746365115,
+            0.3480177336354832,
+            2.3020855018355242e-8,
+        ),
+        (
+            0.0036637531332310938,
+            0.4092178931529138,
+            4.573769696813325e-9,
+        ),
+    ] {
+        let c = PreviewController::new(H, G, dt, (qe, 0.0, r), 10)
+            .unwrap_or_else(|e| panic!("dt {dt} qe {qe} r {r}: {e}"));
+        assert_stabilising(&c, &format!("dt {dt} qe {qe} r {r}"));
     }
 }
 
@@ -179,4 +222,24 @@ fn servo_equals_batch_least_squares_optimum() {
         err < 1e-6,
         "servo vs batch optimum: max CoM difference {err:e}"
     );
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+    /// Any period of 0.5-20 ms and weights with `Q_e / r` up to 1e9 (`Q_x` zero or not): the
+    /// servo is built and its `P` is the stabilising DARE solution (20000 random settings in
+    /// this range all pass; 0.06 % fail without the balanced retry, more above 1e10).
+    #[test]
+    fn dare_is_solved_over_the_weight_range(
+        dt in 5e-4f64..0.02,
+        log_qe in -1.0f64..2.0,
+        qx in proptest::prop_oneof![proptest::strategy::Just(0.0), 1e-6f64..1.0],
+        log_ratio in 2.0f64..9.0,
+    ) {
+        let qe = 10f64.powf(log_qe);
+        let r = qe / 10f64.powf(log_ratio);
+        let c = PreviewController::new(H, G, dt, (qe, qx, r), 10)
+            .unwrap_or_else(|e| panic!("dt {dt} qe {qe} qx {qx} r {r}: {e}"));
+        assert_stabilising(&c, &format!("dt {dt} qe {qe} qx {qx} r {r}"));
+    }
 }
