@@ -1,9 +1,9 @@
 //! One walking IK cycle allocates nothing (counting global allocator), for every method.
 
-use biped_alloc_count::{allocations, Counting};
 use biped_control::pattern::WalkingPattern;
 use biped_control::walk::{walk_pattern_params, Method, WalkController, WalkParams};
 use biped_robots::lola::{self, LolaType};
+use biped_test_support::alloc::{allocations, Counting};
 
 #[global_allocator]
 static GLOBAL: Counting = Counting;

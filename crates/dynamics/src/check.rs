@@ -32,6 +32,16 @@ pub(crate) fn vector(
     Err(DynamicsError::NonFinite { argument, index })
 }
 
+/// A computed result must be finite: [`DynamicsError::NonFiniteResult`] at its first bad entry.
+#[inline]
+pub(crate) fn result(quantity: &'static str, xs: &[f64]) -> Result<(), DynamicsError> {
+    if !any_non_finite(xs) {
+        return Ok(());
+    }
+    let index = xs.iter().position(|x| !x.is_finite()).unwrap_or(0);
+    Err(DynamicsError::NonFiniteResult { quantity, index })
+}
+
 /// Exponent bits of an `f64`: all set exactly for infinities and NaNs.
 const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
 

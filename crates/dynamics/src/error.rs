@@ -160,4 +160,15 @@ pub enum DynamicsError {
     /// The algorithm does not support a feature of the model.
     #[error("algorithm not supported for this model: {0}")]
     Unsupported(&'static str),
+    /// A result overflowed to infinity or NaN although every input was finite (inputs too
+    /// large for `f64`, e.g. a body of 1e308 kg).
+    #[error(
+        "result `{quantity}` is non-finite at index {index} (finite inputs too large for f64)"
+    )]
+    NonFiniteResult {
+        /// Which result.
+        quantity: &'static str,
+        /// Index of the first offending entry.
+        index: usize,
+    },
 }

@@ -3,11 +3,11 @@
 
 mod core_support;
 
-use biped_alloc_count::{allocations, Counting};
 use biped_dynamics::{
     center_of_mass, forward_dynamics, forward_kinematics, inverse_dynamics, mass_matrix, on,
     Algorithm, Centroidal, Data, Force, JacobianFrame, Jacobians,
 };
+use biped_test_support::alloc::{allocations, Counting};
 use core_support::*;
 use nalgebra::{DMatrix, DVector, Vector3};
 

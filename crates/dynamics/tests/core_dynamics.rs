@@ -173,3 +173,38 @@ fn free_body_falls_with_gravity() {
         }
     }
 }
+
+/// Finite inputs whose products overflow (a free body of 1e308 kg under gravity): forward and
+/// inverse dynamics give the typed error, never an `Ok` holding infinities or NaNs.
+#[test]
+fn overflowing_inputs_give_a_typed_error() {
+    use biped_dynamics::{DynamicsError, JointModel, ModelBuilder, RigidInertia};
+    let inertia = RigidInertia::new(
+        1e308,
+        Vector3::zeros(),
+        nalgebra::Matrix3::from_diagonal_element(1e307),
+    )
+    .expect("finite inertia");
+    let mut b = ModelBuilder::new();
+    let placement = nalgebra::Isometry3::identity();
+    add_named(
+        &mut b,
+        "heavy",
+        None,
+        JointModel::FreeQuaternion,
+        placement,
+        inertia,
+    );
+    let model = b.build().expect("model");
+    let (q, v) = (model.neutral(), DVector::zeros(6));
+    let mut data = Data::new(&model);
+    let overflow = |r: Result<&DVector<f64>, DynamicsError>| {
+        matches!(r, Err(DynamicsError::NonFiniteResult { .. }))
+    };
+    for algo in [Algorithm::On, Algorithm::Crba, Algorithm::Sparse] {
+        let r = forward_dynamics(&model, &mut data, &q, &v, &DVector::zeros(6), None, algo);
+        assert!(overflow(r), "{algo:?}");
+    }
+    let r = inverse_dynamics(&model, &mut data, &q, &v, &DVector::zeros(6), None);
+    assert!(overflow(r));
+}

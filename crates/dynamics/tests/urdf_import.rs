@@ -1,6 +1,7 @@
 //! URDF import: structure of the bundled humanoid, merging, and located errors.
 
 use biped_dynamics::urdf::{load_file, load_str, UrdfError, UrdfOptions};
+use biped_test_support::mutate;
 use std::path::PathBuf;
 
 /// The bundled Unitree G1 URDF (BSD-3-Clause, see data/README.md).
@@ -253,4 +254,67 @@ fn missing_file_and_bad_xml_name_the_file() {
     );
     assert!(matches!(err, UrdfError::Parse { .. }));
     assert!(text.starts_with("test.urdf:"), "{text}");
+}
+
+/// An imported (possibly corrupted but accepted) model: forward dynamics at the neutral
+/// configuration is finite or a typed error, never a panic or a NaN.
+fn dynamics_is_finite_or_error(model: &biped_dynamics::Model) -> Result<(), String> {
+    let (q, v) = (model.neutral(), nalgebra::DVector::zeros(model.nv()));
+    let tau = nalgebra::DVector::from_element(model.nv(), 0.1);
+    let mut data = biped_dynamics::Data::new(model);
+    let algo = biped_dynamics::Algorithm::On;
+    match biped_dynamics::forward_dynamics(model, &mut data, &q, &v, &tau, None, algo) {
+        Ok(ddq) if ddq.iter().any(|x| !x.is_finite()) => Err(format!("qddot {ddq:?}")),
+        _ => Ok(()),
+    }
+}
+
+/// Checks one import of mutated text: a one-line error naming the source, or a model whose
+/// dynamics are finite or a typed error.
+fn check_mutated(bytes: &[u8], options: &UrdfOptions) -> Result<(), String> {
+    let xml = String::from_utf8_lossy(bytes);
+    match load_str(&xml, "mutated.urdf", options) {
+        Err(e) => {
+            let text = e.to_string();
+            match !text.contains('\n') && text.starts_with("mutated.urdf") {
+                true => Ok(()),
+                false => Err(format!("error not one located line: {text}")),
+            }
+        }
+        Ok(imported) => dynamics_is_finite_or_error(&imported.model),
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+
+    /// Random byte edits of the G1 file, floating base: never a panic.
+    #[test]
+    fn mutated_g1_never_panics(edits in mutate::byte_edits(6)) {
+        let bytes = mutate::apply(&std::fs::read(g1_path()).unwrap(), &edits);
+        let options = UrdfOptions { floating: true, ..UrdfOptions::default() };
+        let r = check_mutated(&bytes, &options);
+        proptest::prop_assert!(r.is_ok(), "{:?}", r);
+    }
+
+    /// Numbers of the G1 file replaced by edge values (zero, +-1e308, subnormal, negative):
+    /// masses, inertias, origins, axes and limits reach the import's checks.
+    #[test]
+    fn edge_numbers_in_g1_never_panic(edits in mutate::number_edits(4)) {
+        let text = mutate::apply_numbers(&std::fs::read_to_string(g1_path()).unwrap(), &edits);
+        let options = UrdfOptions { floating: true, ..UrdfOptions::default() };
+        let r = check_mutated(text.as_bytes(), &options);
+        proptest::prop_assert!(r.is_ok(), "{:?}", r);
+    }
+
+    /// Edits of the three-link chain by the characters of XML structure and numbers (most
+    /// land in attributes that matter there): never a panic.
+    #[test]
+    fn structural_mutations_of_a_chain_never_panic(
+        edits in mutate::structural_edits(b"<>/\"=-9e.0 \nxyz", 4),
+    ) {
+        let bytes = mutate::apply(chain(J3_OK).as_bytes(), &edits);
+        let r = check_mutated(&bytes, &UrdfOptions::default());
+        proptest::prop_assert!(r.is_ok(), "{:?}", r);
+    }
 }

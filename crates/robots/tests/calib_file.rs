@@ -6,6 +6,7 @@ mod calib_support;
 use biped_robots::calibration::{
     calibrate, CalibrationError, Components, LoadedFile, SolveOptions,
 };
+use biped_test_support::mutate;
 use calib_support::*;
 use std::path::Path;
 
@@ -147,6 +148,10 @@ fn bad_files_name_file_line_and_field() {
     let bad = good.replacen("\"components\"", "\"component\"", 1);
     let e = error_of(&fix(&bad), "unknown");
     assert!(e.contains("component"), "{e}");
+    // A damaged key whose quotes no longer delimit a field name: one line, no stray text.
+    let bad = good.replacen("\"orientation_weight\"", "\":rientation_weight\"", 1);
+    let e = error_of(&fix(&bad), "damaged");
+    assert!(!e.contains('\n') && e.contains(":rientation_weight"), "{e}");
     // Unknown joint in the calibrated list.
     let bad = good.replacen("\"left_knee_joint\"", "\"left_kneee_joint\"", 1);
     let e = error_of(&fix(&bad), "joint");
@@ -243,4 +248,43 @@ fn non_finite_or_inconsistent_input_is_a_typed_error() {
         p.residual(&x),
         Err(CalibrationError::NonFinite(_))
     ));
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(120))]
+
+    /// Random edits of the example file never panic: parsing, the model, the problem and the
+    /// solve end in a one-line error (file errors naming the file) or offsets that are all
+    /// finite.
+    #[test]
+    fn mutated_calibration_file_never_panics(
+        edits in proptest::prop_oneof![
+            mutate::byte_edits(4),
+            mutate::structural_edits(b"-9e.0[]{}\":,", 3),
+        ],
+        numbers in mutate::number_edits(3),
+        bytes_or_numbers in proptest::bool::ANY,
+    ) {
+        // Byte edits, or edge values for numbers (well-formed JSON whose values reach the
+        // problem set-up and the solve).
+        let good = std::fs::read_to_string(EXAMPLE).unwrap();
+        let text = match bytes_or_numbers {
+            true => String::from_utf8_lossy(&mutate::apply(good.as_bytes(), &edits)).into_owned(),
+            false => mutate::apply_numbers(&good, &numbers),
+        };
+        let r = LoadedFile::parse(EXAMPLE, text).and_then(|f| {
+            let urdf = f.load_model()?;
+            calibrate(&f.problem(&urdf)?, &SolveOptions::default())
+        });
+        match r {
+            Ok(c) => proptest::prop_assert!(c.offsets.iter().all(|x| x.is_finite()), "{c:?}"),
+            Err(e) => {
+                let msg = e.to_string();
+                proptest::prop_assert!(!msg.contains('\n'), "{msg}");
+                if let CalibrationError::File { file, .. } = &e {
+                    proptest::prop_assert_eq!(file.as_str(), EXAMPLE);
+                }
+            }
+        }
+    }
 }

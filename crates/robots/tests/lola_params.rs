@@ -1,6 +1,8 @@
-//! Errors of the Lola parameter file name the file, the line and the field.
+//! Errors of the Lola parameter file name the file, the line and the field; random and
+//! edge-value edits of the shipped file never panic.
 
 use biped_robots::lola::{self, LolaError, LolaType, LOLA_TOML};
+use biped_test_support::mutate;
 
 fn build(text: &str) -> Result<lola::LolaModel, LolaError> {
     lola::build_from_str(text, "test.toml", LolaType::Type2)
@@ -12,6 +14,13 @@ fn line_of(text: &str, needle: &str) -> usize {
         .matches('\n')
         .count()
         + 1
+}
+
+/// 1-based line of the `name` of the body table holding the first `needle`.
+fn body_line(text: &str, needle: &str) -> usize {
+    let at = text.find(needle).expect(needle);
+    let name = text[..at].rfind("name = ").expect("a body name before it");
+    text[..name].matches('\n').count() + 1
 }
 
 #[test]
@@ -77,7 +86,12 @@ fn unknown_parent_and_bad_axis_name_the_field() {
 #[test]
 fn bad_values_are_errors_not_panics() {
     let knee_range = LOLA_TOML.replacen("limits = [0.0, 1.9]", "limits = [0.0, 3.1]", 1);
-    assert!(matches!(build(&knee_range), Err(LolaError::Mechanism(_))));
+    let knee_line = body_line(&knee_range, "limits = [0.0, 3.1]");
+    let e = build(&knee_range).unwrap_err();
+    assert!(
+        matches!(&e, LolaError::Mechanism { file, line, .. } if file == "test.toml" && *line == knee_line),
+        "{e}"
+    );
     let inverted = LOLA_TOML.replacen("limits = [-0.6, 0.6]", "limits = [0.6, -0.6]", 1);
     assert!(matches!(
         build(&inverted),
@@ -87,10 +101,56 @@ fn bad_values_are_errors_not_panics() {
         })
     ));
     let negative = LOLA_TOML.replacen("mass = 7.0", "mass = -7.0", 1);
-    assert!(matches!(build(&negative), Err(LolaError::Model(_))));
+    let mass_line = body_line(&negative, "mass = -7.0");
+    let e = build(&negative).unwrap_err();
+    assert!(
+        matches!(&e, LolaError::Model { file, line, .. } if file == "test.toml" && *line == mass_line),
+        "{e}"
+    );
     let missing = std::path::Path::new("/nonexistent/lola.toml");
     assert!(matches!(
         lola::load_file(missing, LolaType::Type3),
         Err(LolaError::Io { .. })
     ));
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(150))]
+
+    /// Random edits of the shipped parameter file never panic: a located error (file and a
+    /// line inside it), or a model whose dynamics at its neutral configuration are finite or
+    /// a typed error.
+    #[test]
+    fn mutated_parameter_file_never_panics(
+        edits in proptest::prop_oneof![
+            mutate::byte_edits(5),
+            mutate::structural_edits(b"-9e.0[]\"=\n#", 4),
+        ],
+        numbers in mutate::number_edits(3),
+        which in 0..3u8,
+    ) {
+        // Byte edits, edge values for numbers (well-formed, so the values reach the checks
+        // of the model assembly), or both.
+        let text = match which {
+            0 => String::from_utf8_lossy(&mutate::apply(LOLA_TOML.as_bytes(), &edits)).into_owned(),
+            1 => mutate::apply_numbers(LOLA_TOML, &numbers),
+            _ => mutate::apply_numbers(&String::from_utf8_lossy(&mutate::apply(LOLA_TOML.as_bytes(), &edits)), &numbers),
+        };
+        match build(&text) {
+            Err(e) => {
+                let msg = e.to_string();
+                proptest::prop_assert!(msg.starts_with("test.toml") && !msg.contains('\n'), "{msg}");
+            }
+            Ok(lm) => {
+                let m = &lm.model;
+                let mut data = biped_dynamics::Data::new(m);
+                let zero = nalgebra::DVector::zeros(m.nv());
+                let on = biped_dynamics::Algorithm::On;
+                let r = biped_dynamics::forward_dynamics(m, &mut data, &m.neutral(), &zero, &zero, None, on);
+                if let Ok(ddq) = r {
+                    proptest::prop_assert!(ddq.iter().all(|x| x.is_finite()), "{ddq:?}");
+                }
+            }
+        }
+    }
 }

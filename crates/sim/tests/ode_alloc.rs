@@ -3,8 +3,8 @@
 
 mod ode_support;
 
-use biped_alloc_count::{allocations, Counting};
 use biped_sim::ode::{Integrator, Method, Settings};
+use biped_test_support::alloc::{allocations, Counting};
 use ode_support::Kepler;
 
 #[global_allocator]

@@ -1,12 +1,12 @@
 //! No heap allocation per right-hand side or per control cycle (issue item 9): a counting
 //! global allocator around the Lola Type 2 plant.
 
-use biped_alloc_count::{count, Counting};
 use biped_robots::lola::LolaType;
 use biped_sim::ode::{Method, OdeSystem};
 use biped_sim::plant::{lola_plant, PlantConfig};
 use biped_sim::scenario::{build, ScenarioKind, ScenarioOptions};
 use biped_sim::simulation::Simulation;
+use biped_test_support::alloc::{count, Counting};
 
 #[global_allocator]
 static GLOBAL: Counting = Counting;

@@ -2,8 +2,8 @@
 
 mod model_support;
 
-use biped_alloc_count::{allocations, Counting};
 use biped_ssv::format;
+use biped_test_support::alloc::{allocations, Counting};
 use model_support::data_path;
 
 #[global_allocator]

@@ -6,6 +6,7 @@ mod model_support;
 use biped_ssv::format::{self, FormatErrorKind};
 use biped_ssv::segment::MirrorPlane;
 use biped_ssv::{FormatError, Ssv};
+use biped_test_support::mutate;
 use model_support::data_path;
 use proptest::prelude::*;
 
@@ -335,42 +336,41 @@ proptest! {
     /// Random byte edits (replace, insert, delete) of the humanoid file never panic; every
     /// error carries the file name and a line inside the file.
     #[test]
-    fn random_mutations_never_panic(
-        edits in prop::collection::vec((0usize..3, any::<prop::sample::Index>(), any::<u8>()), 1..8),
-    ) {
-        let mut bytes = std::fs::read(data_path("humanoid.toml")).unwrap();
-        for (op, at, byte) in edits {
-            let i = at.index(bytes.len());
-            match op {
-                0 => bytes[i] = byte,
-                1 => bytes.insert(i, byte),
-                _ => {
-                    bytes.remove(i);
-                }
-            }
-        }
-        let lines = 2 + bytes.iter().filter(|&&b| b == b'\n').count();
+    fn random_mutations_never_panic(edits in mutate::byte_edits(7)) {
+        let bytes = mutate::apply(&std::fs::read(data_path("humanoid.toml")).unwrap(), &edits);
+        let lines = 1 + mutate::line_count(&bytes);
         if let Err(e) = format::parse_bytes(&bytes, "mutated.toml") {
             prop_assert_eq!(e.file.as_str(), "mutated.toml");
             prop_assert!(e.line >= 1 && e.line <= lines, "{}", e);
         }
     }
 
+    /// Numbers replaced by edge values (zero, +-1e308, subnormal, negative): a located
+    /// error, or a model whose distances and closest points at the file's first posture are
+    /// finite (or whose update is a typed error).
+    #[test]
+    fn edge_numbers_never_panic_or_give_nan(edits in mutate::number_edits(3)) {
+        let good = std::fs::read_to_string(data_path("humanoid.toml")).unwrap();
+        let text = mutate::apply_numbers(&good, &edits);
+        let Ok(mut loaded) = format::parse_str(&text, "edge.toml") else {
+            return Ok(());
+        };
+        let poses = loaded.poses.values().next().cloned().unwrap_or_default();
+        if loaded.model.update(&poses).is_ok() {
+            for (_, d) in loaded.model.distances() {
+                let finite = d.computed().is_none_or(|c| {
+                    let r = &c.result;
+                    r.distance.is_finite() && r.point_a.iter().chain(r.point_b.iter()).all(|x| x.is_finite())
+                });
+                prop_assert!(finite, "{:?}", d);
+            }
+        }
+    }
+
     /// Mutations biased to the characters that matter in TOML numbers and structure.
     #[test]
-    fn structural_mutations_never_panic(
-        edits in prop::collection::vec(
-            (any::<prop::sample::Index>(), prop::sample::select(
-                vec![b'-', b'9', b'e', b'.', b'[', b']', b'{', b'}', b',', b'"', b'=', b'\n', b'#', b'n']
-            )),
-            1..6,
-        ),
-    ) {
-        let mut bytes = std::fs::read(data_path("humanoid.toml")).unwrap();
-        for (at, byte) in edits {
-            let i = at.index(bytes.len());
-            bytes[i] = byte;
-        }
+    fn structural_mutations_never_panic(edits in mutate::structural_edits(b"-9e.[]{},\"=\n#n", 5)) {
+        let bytes = mutate::apply(&std::fs::read(data_path("humanoid.toml")).unwrap(), &edits);
         let _ = format::parse_bytes(&bytes, "mutated.toml");
     }
 }

@@ -118,7 +118,9 @@ pub fn forward_dynamics_solve<'d>(
         return Err(DynamicsError::KinematicsNotCurrent);
     }
     if algo == Algorithm::On {
-        return on::solve(model, data, tau, fext);
+        let ddq = on::solve(model, data, tau, fext)?;
+        check::result("qddot", ddq.as_slice())?;
+        return Ok(ddq);
     }
     complete_rotor_kinematics(model, data);
     body_forces(model, data, fext);
@@ -134,6 +136,7 @@ pub fn forward_dynamics_solve<'d>(
         solve::ltl_in_place(&mut data.factor, &model.dof_parent, &data.mass)?;
         solve::ltl_solve_in_place(&data.factor, &model.dof_parent, &mut data.ddq);
     }
+    check::result("qddot", data.ddq.as_slice())?;
     let ddq = std::mem::take(&mut data.ddq);
     crate::kinematics::propagate_accelerations(model, data, Some(&ddq));
     data.ddq = ddq;
@@ -153,6 +156,7 @@ pub fn mass_matrix<'d>(
     }
     take_fault(data)?;
     crba::crba(model, data);
+    check::result("mass matrix", data.mass.as_slice())?;
     Ok(&data.mass)
 }
 
@@ -173,5 +177,6 @@ pub fn inverse_dynamics<'d>(
     first_forward(model, data, q, v, fext);
     take_fault(data)?;
     rnea::rnea_from_kinematics(model, data, Some(a), false);
+    check::result("tau", data.tau.as_slice())?;
     Ok(&data.tau)
 }

@@ -152,8 +152,15 @@ fn offset_of(text: &str, line: usize, column: usize) -> usize {
     (start + column.saturating_sub(1)).min(text.len())
 }
 
-/// The last JSON object key (`"key":`) that starts before byte `offset`.
+/// The last JSON object key (`"key":`) that starts before byte `offset`, if it is a field
+/// name of the format (letters, digits, `_`; a damaged file can put the quotes elsewhere).
 fn key_before(text: &str, offset: usize) -> Option<String> {
+    quoted_before(text, offset)
+        .filter(|k| !k.is_empty() && k.chars().all(|c| c.is_ascii_alphanumeric() || c == '_'))
+}
+
+/// The text between the last pair of quotes followed by `:` before byte `offset`.
+fn quoted_before(text: &str, offset: usize) -> Option<String> {
     let head = &text[..offset.min(text.len())];
     let bytes = head.as_bytes();
     let mut i = head.len();

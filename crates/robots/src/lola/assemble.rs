@@ -59,7 +59,8 @@ pub(crate) fn assemble(
         ankles: HashMap::new(),
     };
     for body in &p.body {
-        a.add(body)?;
+        a.add(body)
+            .map_err(|e| loc.locate(e, Some(body.name.span())))?;
     }
     if let Some((_, pending)) = a.ankles.iter().next() {
         let name = a.builder_name(pending.cross);
@@ -70,7 +71,7 @@ pub(crate) fn assemble(
             reason: format!("ankle flexion `{name}` has no ankle_adduction child"),
         });
     }
-    a.finish()
+    a.finish().map_err(|e| loc.locate(e, None))
 }
 
 impl Assembler<'_> {

@@ -127,12 +127,43 @@ pub enum LolaError {
         /// What is wrong.
         reason: String,
     },
-    /// The multibody model rejected a body.
-    #[error("model: {0}")]
-    Model(#[from] biped_dynamics::ModelError),
-    /// A drive mechanism rejected its parameters.
-    #[error("mechanism: {0}")]
-    Mechanism(#[from] biped_dynamics::mechanism::MechanismError),
+    /// The multibody model rejected a body or one of its drive parts (located at the body's
+    /// `name`; line 0 if no body is to blame).
+    #[error("{file}:{line}: model: {source}")]
+    Model {
+        /// File name.
+        file: String,
+        /// 1-based line of the body's `name`.
+        line: usize,
+        /// The model builder's error.
+        source: biped_dynamics::ModelError,
+    },
+    /// A drive mechanism rejected its parameters (located at the body it drives).
+    #[error("{file}:{line}: mechanism: {source}")]
+    Mechanism {
+        /// File name.
+        file: String,
+        /// 1-based line of the body's `name`.
+        line: usize,
+        /// The mechanism's error.
+        source: biped_dynamics::mechanism::MechanismError,
+    },
+}
+
+/// Not yet located: [`Locator::locate`] fills in file and line.
+impl From<biped_dynamics::ModelError> for LolaError {
+    fn from(source: biped_dynamics::ModelError) -> Self {
+        let (file, line) = (String::new(), 0);
+        LolaError::Model { file, line, source }
+    }
+}
+
+/// Not yet located: [`Locator::locate`] fills in file and line.
+impl From<biped_dynamics::mechanism::MechanismError> for LolaError {
+    fn from(source: biped_dynamics::mechanism::MechanismError) -> Self {
+        let (file, line) = (String::new(), 0);
+        LolaError::Mechanism { file, line, source }
+    }
 }
 
 /// Maps byte offsets of one file to 1-based lines and columns.
@@ -160,6 +191,20 @@ impl Locator<'_> {
             field,
             reason,
         }
+    }
+
+    /// `e` with the file and, from `span` (the body at fault), the line filled in if it is a
+    /// model or mechanism error not located yet; other errors unchanged.
+    pub fn locate(&self, mut e: LolaError, span: Option<Range<usize>>) -> LolaError {
+        if let LolaError::Model { file, line, .. } | LolaError::Mechanism { file, line, .. } =
+            &mut e
+        {
+            if file.is_empty() {
+                *file = self.file.to_string();
+                *line = span.map_or(0, |s| self.line_col(s.start).0);
+            }
+        }
+        e
     }
 
     /// Parses the file text.

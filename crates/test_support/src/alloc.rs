@@ -1,4 +1,4 @@
-//! Test support for the "no heap allocation per call" checks of the workspace: a global
+//! The "no heap allocation per call" checks of the workspace: a global
 //! allocator that counts the allocations (and reallocations) of the calling thread only, so
 //! the test harness's own threads (output capture, parallel tests, more so under load) do not
 //! disturb a count. Install it in a test binary with
