@@ -46,8 +46,9 @@ pub fn dare_residual<const N: usize>(
 /// If that fails, solved again in balanced coordinates ([`Balancing`]), whose solution is
 /// mapped back, polished and accepted on the original problem. On a grid of 2000 preview-servo
 /// settings (periods 0.2-50 ms, `Q_e` 0.1-1e4, `Q_x` 0-1, `r` 1e-12-1) this solves 1994
-/// against 1975 without balancing (and 1955 balanced only); the six left have `Q_e / r` of
-/// 1e13-1e16.
+/// against 1982 without balancing in this workspace's FMA build (1975 in a baseline x86-64
+/// build; balanced alone 1955): which settings fail depends on rounding, and the six left
+/// have `Q_e / r` of 1e11-1e16.
 pub fn solve_dare<const N: usize>(
     a: &SMatrix<f64, N, N>,
     b: &SVector<f64, N>,
