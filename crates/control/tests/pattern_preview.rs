@@ -16,10 +16,10 @@ fn residual(c: &PreviewController) -> f64 {
     (rhs - p).abs().max() / p.abs().max()
 }
 
-/// The independent residual is below 1e-10 and the closed loop is stable.
-fn assert_stabilising(c: &PreviewController, what: &str) {
+/// The independent residual is below `tol` and the closed loop is stable.
+fn assert_stabilising(c: &PreviewController, tol: f64, what: &str) {
     let res = residual(c);
-    assert!(res < 1e-10, "{what}: residual {res:e}");
+    assert!(res < tol, "{what}: residual {res:e}");
     let rho = c
         .closed_loop()
         .complex_eigenvalues()
@@ -63,7 +63,7 @@ fn dare_is_solved_at_short_periods_with_small_input_weight() {
         ] {
             let c = PreviewController::new(H, G, dt, (qe, 0.0, r), 10)
                 .unwrap_or_else(|e| panic!("dt {dt} qe {qe} r {r}: {e}"));
-            assert_stabilising(&c, &format!("dt {dt} qe {qe} r {r}"));
+            assert_stabilising(&c, 1e-10, &format!("dt {dt} qe {qe} r {r}"));
         }
     }
 }
@@ -102,7 +102,7 @@ fn dare_is_solved_with_singular_q_and_tiny_input_weight() {
     ] {
         let c = PreviewController::new(H, G, dt, (qe, 0.0, r), 10)
             .unwrap_or_else(|e| panic!("dt {dt} qe {qe} r {r}: {e}"));
-        assert_stabilising(&c, &format!("dt {dt} qe {qe} r {r}"));
+        assert_stabilising(&c, 1e-10, &format!("dt {dt} qe {qe} r {r}"));
     }
 }
 
@@ -240,6 +240,9 @@ proptest::proptest! {
         let r = qe / 10f64.powf(log_ratio);
         let c = PreviewController::new(H, G, dt, (qe, qx, r), 10)
             .unwrap_or_else(|e| panic!("dt {dt} qe {qe} qx {qx} r {r}: {e}"));
-        assert_stabilising(&c, &format!("dt {dt} qe {qe} qx {qx} r {r}"));
+        // The solver accepts a relative Frobenius residual below 1e-9, which bounds this
+        // max-entry one by 4e-9 for 4x4 matrices; the curated settings above reach 1e-10,
+        // random ones need not (7.4e-10 at 3.2 ms, Q_e 6.4, r 2.7e-7 in the test profile).
+        assert_stabilising(&c, 4e-9, &format!("dt {dt} qe {qe} qx {qx} r {r}"));
     }
 }
