@@ -116,6 +116,42 @@ pub fn apply_numbers(text: &str, edits: &[(Index, &str)]) -> String {
     out
 }
 
+/// One corruption of a text file: byte edits (its bytes read back lossily as UTF-8), edge
+/// values for its numbers, or the byte edits followed by number edits.
+#[derive(Debug, Clone)]
+pub enum Corruption {
+    /// [`byte_edits`] or [`structural_edits`].
+    Bytes(Vec<Edit>),
+    /// [`number_edits`]: the file stays well-formed.
+    Numbers(Vec<(Index, &'static str)>),
+    /// Both, bytes first.
+    Both(Vec<Edit>, Vec<(Index, &'static str)>),
+}
+
+impl Corruption {
+    /// The corrupted `text`.
+    pub fn apply(&self, text: &str) -> String {
+        let bytes =
+            |edits: &[Edit]| String::from_utf8_lossy(&apply(text.as_bytes(), edits)).into_owned();
+        match self {
+            Corruption::Bytes(edits) => bytes(edits),
+            Corruption::Numbers(numbers) => apply_numbers(text, numbers),
+            Corruption::Both(edits, numbers) => apply_numbers(&bytes(edits), numbers),
+        }
+    }
+}
+
+/// Corruptions of all three kinds, up to `max` edits each; structural edits draw from
+/// `alphabet`.
+pub fn corruptions(alphabet: &'static [u8], max: usize) -> impl Strategy<Value = Corruption> {
+    let bytes = || prop_oneof![byte_edits(max), structural_edits(alphabet, max)];
+    prop_oneof![
+        bytes().prop_map(Corruption::Bytes),
+        number_edits(max).prop_map(Corruption::Numbers),
+        (bytes(), number_edits(max)).prop_map(|(b, n)| Corruption::Both(b, n)),
+    ]
+}
+
 /// Number of lines of `bytes` (a final line without a newline counts).
 pub fn line_count(bytes: &[u8]) -> usize {
     1 + bytes.iter().filter(|&&b| b == b'\n').count()
