@@ -40,7 +40,7 @@ pub struct SimulateArgs {
     /// URDF links of the left and right sole.
     #[arg(long, value_name = "LEFT,RIGHT")]
     feet: Option<String>,
-    /// Centre of each sole rectangle in its link frame [m] (default 0,0,-0.05).
+    /// Centre of each sole rectangle in its link frame in m (default 0,0,-0.05).
     #[arg(
         long,
         value_name = "X,Y,Z",
@@ -48,7 +48,7 @@ pub struct SimulateArgs {
         allow_hyphen_values = true
     )]
     sole_center: Option<String>,
-    /// Sole rectangle length (link x) and width (link y) [m] (default 0.2,0.1).
+    /// Sole rectangle length (link x) and width (link y) in m (default 0.2,0.1).
     #[arg(long, value_name = "LENGTH,WIDTH")]
     sole_size: Option<String>,
     /// Hip and ankle adduction joints for `sway` on a URDF robot.
@@ -58,20 +58,20 @@ pub struct SimulateArgs {
     /// (default: Lola 2e5,400; URDF 5e4,100 as URDF feet carry no rotor inertia).
     #[arg(long, value_name = "K,D", allow_hyphen_values = true)]
     contact: Option<String>,
-    /// Initial joint angles [rad], e.g. `knee=0.4,hip=-0.2` (Lola: added to its bent-knee pose).
+    /// Initial joint angles in rad, e.g. `knee=0.4,hip=-0.2` (Lola: added to its bent-knee pose).
     #[arg(long, value_name = "JOINT=ANGLE,...", allow_hyphen_values = true)]
     pose: Option<String>,
     /// Scenario: `stand`, `drop` or `sway`.
     #[arg(long, value_name = "NAME", default_value = "stand")]
     scenario: String,
-    /// Simulated time [s] (default: the scenario's own, long enough for its pass criteria:
+    /// Simulated time in s (default: the scenario's own, long enough for its pass criteria:
     /// stand 3, drop 4, sway 5).
     #[arg(long, value_name = "S", allow_hyphen_values = true)]
     duration: Option<String>,
     /// Integration method: `euler`, `symplectic`, `rk4` or `dopri5`.
     #[arg(long, value_name = "METHOD", default_value = "rk4")]
     integrator: String,
-    /// Fixed step [s] of euler / symplectic / rk4 (default: control period; Type 3: 1e-4).
+    /// Fixed step in s of euler / symplectic / rk4 (default: control period; Type 3: 1e-4).
     #[arg(long, value_name = "H", allow_hyphen_values = true)]
     step: Option<String>,
     /// Relative and absolute tolerance of dopri5 (default 1e-6,1e-9).

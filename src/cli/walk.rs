@@ -22,10 +22,10 @@ pub struct WalkArgs {
     /// Number of steps.
     #[arg(long, default_value_t = 10)]
     steps: usize,
-    /// Step length [m] (footprint ahead of the previous one).
+    /// Step length in m (footprint ahead of the previous one).
     #[arg(long, default_value_t = 0.4)]
     step_length: f64,
-    /// Step time [s].
+    /// Step time in s.
     #[arg(long, default_value_t = 0.8)]
     step_time: f64,
     /// Arm method: none, reference, compensation, minimization or all.

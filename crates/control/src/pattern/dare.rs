@@ -43,7 +43,7 @@ pub fn dare_residual<const N: usize>(
 
 /// Solves the DARE `(a, b, q, r)` by doubling; `q` symmetric positive semi-definite, `r > 0`.
 ///
-/// If that fails, solved again in balanced coordinates ([`Balancing`]), whose solution is
+/// If that fails, solved again in balanced coordinates (`Balancing`), whose solution is
 /// mapped back, polished and accepted on the original problem. On a grid of 2000 preview-servo
 /// settings (periods 0.2-50 ms, `Q_e` 0.1-1e4, `Q_x` 0-1, `r` 1e-12-1) this solves 1994
 /// against 1982 without balancing in this workspace's FMA build (1975 in a baseline x86-64

@@ -4,7 +4,7 @@
 //! (the actuator commands) is held inside the plant and set by the control loop before each
 //! control period (zero-order hold, Fig. 2.1).
 //!
-//! One right-hand side ([`forces`]): the kinematic phase of forward dynamics, contact forces
+//! One right-hand side (`forces`): the kinematic phase of forward dynamics, contact forces
 //! from its foot poses, drive and gear torques, the solve phase, `qdot` from `v`. Every buffer
 //! is allocated in [`Plant::new`].
 

@@ -119,7 +119,7 @@ const MAX_RECIP: f64 = 1.0 / f64::MIN_POSITIVE;
 /// Well-conditioned pairs (6.34) take the normal equations (6.31) with the three
 /// reciprocals 1/|u|^2, 1/|v|^2 and 1/N from a single division; the rest (nearly parallel,
 /// degenerate, or a product outside the normal range) take the general solve of
-/// [`segment_params`].
+/// `segment_params`.
 #[inline]
 pub fn ll(a: &Lss, b: &Lss) -> DistanceResult {
     let [p0, p1] = a.vertices();

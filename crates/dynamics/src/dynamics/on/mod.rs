@@ -15,7 +15,7 @@
 //! (`subsystem::axial`), and one-DoF sub-systems of one link plus such rotors take the
 //! one-DoF body step with constant rotor terms (`subsystem::link`).
 //!
-//! Files: [`first`] (body forces, rotor bias), [`backward`] (Algorithm 2.3), [`forward`]
+//! Files: `first` (body forces, rotor bias), `backward` (Algorithm 2.3), `forward`
 //! (Algorithm 2.4), `six_dof` (the 6-DoF joint steps of both passes).
 
 mod backward;
