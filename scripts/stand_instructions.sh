@@ -9,8 +9,8 @@
 # FMA contraction. The count is the difference of a 0.4 s and a 0.2 s run divided by 200
 # cycles, so start-up, model assembly and output writing cancel.
 set -euo pipefail
+bin=${1:+$(realpath "$1")}
 cd "$(dirname "$0")/.."
-bin=${1:-}
 if [ -z "$bin" ]; then
   CARGO_TARGET_DIR=target/callgrind \
     RUSTFLAGS="-C target-cpu=x86-64-v2 -C llvm-args=-fp-contract=fast" \
