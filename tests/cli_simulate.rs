@@ -286,6 +286,48 @@ fn urdf_robot_stands_on_its_soles() {
     );
 }
 
+/// `--armature` adds geared rotor bodies and leaves the coordinates alone; the G1 with its
+/// motors' rotor inertia and a 20 rad/s PD passes `stand --check` (exit status 0).
+#[test]
+fn urdf_rotors_from_armature() {
+    let g1 = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/crates/dynamics/data/g1_29dof_rev_1_0.urdf"
+    );
+    let pose = "left_hip_pitch_joint=-0.2,left_knee_joint=0.4,left_ankle_pitch_joint=-0.2,\
+                right_hip_pitch_joint=-0.2,right_knee_joint=0.4,right_ankle_pitch_joint=-0.2";
+    let armature = "*_hip_pitch_joint=0.0102,*_hip_yaw_joint=0.0102,waist_yaw_joint=0.0102,\
+                    *_hip_roll_joint=0.0251,*_knee_joint=0.0251,*_ankle_*=0.00722,\
+                    waist_*=0.00722,*_wrist_pitch_joint=0.00425,*_wrist_yaw_joint=0.00425,\
+                    *=0.00361";
+    let (out, dir) = simulate(
+        "g1_rotors",
+        &[
+            "--urdf",
+            g1,
+            "--floating",
+            "--feet",
+            "left_ankle_roll_link,right_ankle_roll_link",
+            "--sole-center",
+            "0.035,0,-0.035",
+            "--sole-size",
+            "0.17,0.055",
+            "--pose",
+            pose,
+            "--armature",
+            armature,
+            "--bandwidth",
+            "20",
+            "--check",
+        ],
+    );
+    let s = summary(&out, &dir);
+    assert_eq!(s["layout"]["nv"].as_u64(), Some(35));
+    assert_eq!(s["actuators"].as_u64(), Some(29));
+    let checks = s["checks"].as_array().expect("checks");
+    assert!(checks.iter().all(|c| c["passed"] == true), "{s}");
+}
+
 #[test]
 fn failures_and_criteria_set_the_exit_status() {
     // Explicit Euler at 1 ms on Type 3's stiff gears diverges: one line, partial CSV kept.
@@ -424,6 +466,53 @@ fn bad_inputs_fail_with_one_line() {
         (&["--every", "1.5"], &["--every"]),
         (&["--contact", "-1,0"], &["--contact", "stiffness"]),
         (&["--contact", "1e5"], &["--contact", "2 comma-separated"]),
+        (&["--bandwidth", "0"], &["--bandwidth", "> 0"]),
+        (
+            &[
+                "--urdf",
+                g1,
+                "--floating",
+                "--feet",
+                feet,
+                "--armature",
+                "*_knee",
+            ],
+            &["--armature", "JOINT=KG_M2"],
+        ),
+        (
+            &[
+                "--urdf",
+                g1,
+                "--floating",
+                "--feet",
+                feet,
+                "--armature",
+                "*_knee_jiont=0.02",
+            ],
+            &[
+                "--armature",
+                "*_knee_jiont",
+                "matches no revolute joint",
+                "g1_29dof",
+            ],
+        ),
+        (
+            &[
+                "--urdf",
+                g1,
+                "--floating",
+                "--feet",
+                feet,
+                "--armature",
+                "*_knee_joint=-0.02",
+            ],
+            &["--armature", "*_knee_joint", ">= 0"],
+        ),
+        (
+            &["--armature", "*=0.01"],
+            &["--armature", "only applies with --urdf"],
+        ),
+        (&["--bandwidth", "-3"], &["--bandwidth", "> 0"]),
     ];
     for (args, expected) in cases {
         fails_with("bad", args, expected);

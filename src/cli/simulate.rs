@@ -54,13 +54,21 @@ pub struct SimulateArgs {
     /// Hip and ankle adduction joints for `sway` on a URDF robot.
     #[arg(long, value_name = "HIP_L,HIP_R,ANKLE_L,ANKLE_R")]
     sway_joints: Option<String>,
+    /// Reflected rotor inertia `N^2 J` [kg m^2] of URDF joints, added as geared rotor bodies,
+    /// e.g. `*_knee_joint=0.025,*_ankle_*=0.0072` (`*` matches any run; first match wins).
+    #[arg(long, value_name = "JOINT=KG_M2,...", allow_hyphen_values = true)]
+    armature: Option<String>,
     /// Contact stiffness [N/m] and damping [N s/m] of each sole point, normal and tangential
-    /// (default: Lola 2e5,400; URDF 5e4,100 as URDF feet carry no rotor inertia).
+    /// (default: Lola 2e5,400; URDF 5e4,100 for the light feet of URDF robots).
     #[arg(long, value_name = "K,D", allow_hyphen_values = true)]
     contact: Option<String>,
     /// Initial joint angles in rad, e.g. `knee=0.4,hip=-0.2` (Lola: added to its bent-knee pose).
     #[arg(long, value_name = "JOINT=ANGLE,...", allow_hyphen_values = true)]
     pose: Option<String>,
+    /// Bandwidth `w` of the joint PD controllers in rad/s (`k_p = w^2 m`, `k_d = 2 w m` with the
+    /// joint's inertia `m`, capped for the 1 kHz hold; default 40).
+    #[arg(long, value_name = "RAD_S", allow_hyphen_values = true)]
+    bandwidth: Option<String>,
     /// Scenario: `stand`, `drop` or `sway`.
     #[arg(long, value_name = "NAME", default_value = "stand")]
     scenario: String,

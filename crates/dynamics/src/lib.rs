@@ -32,6 +32,8 @@ pub use dynamics::{
 pub use error::{DynamicsError, ModelError};
 pub use jacobian::{JacobianError, JacobianFrame, Jacobians};
 pub use kinematics::{forward_kinematics, update_placements};
-pub use model::{Body, BodyId, BodySpec, IndexSet, JointInfo, JointModel, Model, ModelBuilder};
+pub use model::{
+    Body, BodyId, BodySpec, IndexSet, JointInfo, JointModel, Model, ModelBuilder, RotorSpec,
+};
 pub use spatial::{Force, Motion, RigidInertia, SpatialTransform, Wrench};
 pub use subsystem::{Node, NodeKind, Subsystem};

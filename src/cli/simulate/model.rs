@@ -1,10 +1,10 @@
 //! The simulated robot: the Lola-like biped (`--lola`) or a floating-base URDF robot
 //! (`--urdf --floating --feet ...`), as a plant with its scenario options and default step.
 
-use super::parse::{names, numbers};
+use super::parse::{names, numbers, parse_armature};
 use super::SimulateArgs;
 use biped_robots::lola::LolaType;
-use biped_sim::plant::{lola_plant, urdf_plant, Plant, PlantConfig, UrdfFeet};
+use biped_sim::plant::{lola_plant, urdf_plant, Armature, Plant, PlantConfig, UrdfFeet};
 use biped_sim::scenario::{ScenarioKind, ScenarioOptions, SwayJoints};
 use biped_sim::SimError;
 use nalgebra::Vector3;
@@ -16,9 +16,9 @@ type SetupError = Box<dyn std::error::Error>;
 /// Fixed step of Type 3 \[s]: its elastic gears (~9000 rad/s on the toe) need <= 0.25 ms.
 const TYPE3_STEP: f64 = 1e-4;
 
-/// Contact stiffness and damping per point of URDF robots \[N/m, N s/m]: their feet carry no
-/// reflected rotor inertia, so Lola's 2e5 / 400 puts the foot's damping eigenvalue
-/// (`8 d / m_foot`, ~5000 1/s on the G1) outside RK4's stability region at 1 ms.
+/// Contact stiffness and damping per point of URDF robots \[N/m, N s/m]: Lola's 2e5 / 400 puts
+/// the damping eigenvalue of a light foot (`8 d / m_foot`, ~5000 1/s for the G1's 0.6 kg
+/// feet) outside RK4's stability region at 1 ms, with or without `--armature` rotors.
 const URDF_CONTACT: [f64; 2] = [5e4, 100.0];
 
 /// Plant, scenario options, label and default fixed step of the Lola-like biped.
@@ -44,6 +44,7 @@ pub fn urdf_only(a: &SimulateArgs) -> Result<(), String> {
         ("--feet", a.feet.is_some()),
         ("--sole-center", a.sole_center.is_some()),
         ("--sole-size", a.sole_size.is_some()),
+        ("--armature", a.armature.is_some()),
         ("--sway-joints", a.sway_joints.is_some()),
     ];
     match given.iter().find(|(_, on)| *on) {
@@ -66,8 +67,12 @@ pub fn urdf_source(
         return Err(why.into());
     }
     let feet = urdf_feet(a)?;
+    let armature = armature(a)?;
     let config = plant_config(a, Some(URDF_CONTACT))?;
-    let plant = urdf_plant(path, &feet, config).map_err(|e| match e {
+    let plant = urdf_plant(path, &feet, &armature, config).map_err(|e| match e {
+        SimError::InvalidParameter { what, reason } if what == "armature" => {
+            format!("--armature: {reason} in {}", path.display())
+        }
         SimError::InvalidParameter { what, reason } if what == "urdf" => reason,
         e @ SimError::Unknown { .. } => format!("--feet: {e} in {}", path.display()),
         e => format!("{}: {e}", path.display()),
@@ -78,6 +83,18 @@ pub fn urdf_source(
     };
     let step = options.period;
     Ok((plant, options, path.display().to_string(), step))
+}
+
+/// Rotor inertias from `--armature` (none without it).
+fn armature(a: &SimulateArgs) -> Result<Vec<Armature>, String> {
+    let Some(text) = &a.armature else {
+        return Ok(Vec::new());
+    };
+    let pairs = parse_armature(text)?;
+    Ok(pairs
+        .into_iter()
+        .map(|(pattern, inertia)| Armature { pattern, inertia })
+        .collect())
 }
 
 /// Sole links and rectangle from `--feet`, `--sole-center`, `--sole-size`.

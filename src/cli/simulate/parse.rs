@@ -41,16 +41,31 @@ pub fn names(text: &str, n: usize, option: &str, shape: &str) -> Result<Vec<Stri
 
 /// `JOINT=ANGLE` pairs separated by commas.
 pub fn parse_pose(text: &str) -> Result<Vec<(String, f64)>, String> {
+    named_values(text, "--pose", "JOINT=ANGLE", "angle")
+}
+
+/// `PATTERN=KG_M2` pairs separated by commas (reflected rotor inertias of URDF joints).
+pub fn parse_armature(text: &str) -> Result<Vec<(String, f64)>, String> {
+    named_values(text, "--armature", "JOINT=KG_M2", "inertia")
+}
+
+/// `NAME=VALUE` pairs separated by commas, each value a finite number (`quantity` in errors).
+fn named_values(
+    text: &str,
+    option: &str,
+    shape: &str,
+    quantity: &str,
+) -> Result<Vec<(String, f64)>, String> {
     text.split(',')
         .map(|item| {
             let bad =
-                || format!("--pose: expected JOINT=ANGLE with a finite angle, got \"{item}\"");
-            let (joint, angle) = item.split_once('=').ok_or_else(bad)?;
-            let angle: f64 = angle.trim().parse().map_err(|_| bad())?;
-            if joint.trim().is_empty() || !angle.is_finite() {
+                || format!("{option}: expected {shape} with a finite {quantity}, got \"{item}\"");
+            let (name, value) = item.split_once('=').ok_or_else(bad)?;
+            let value: f64 = value.trim().parse().map_err(|_| bad())?;
+            if name.trim().is_empty() || !value.is_finite() {
                 return Err(bad());
             }
-            Ok((joint.trim().to_string(), angle))
+            Ok((name.trim().to_string(), value))
         })
         .collect()
 }
@@ -77,6 +92,11 @@ mod tests {
         assert!(names("a,", 2, "--n", "A,B").is_err());
         let pose = parse_pose("knee=0.4, hip = -0.2").unwrap();
         assert_eq!(pose, vec![("knee".into(), 0.4), ("hip".into(), -0.2)]);
+        let arm = parse_armature("*_knee_joint=0.025").unwrap();
+        assert_eq!(arm, vec![("*_knee_joint".into(), 0.025)]);
+        assert!(parse_armature("*_knee_joint")
+            .unwrap_err()
+            .starts_with("--armature: expected JOINT=KG_M2"));
         for bad in ["knee", "=1", "knee=x", "knee=inf", ""] {
             assert!(parse_pose(bad).is_err(), "{bad}");
         }

@@ -102,6 +102,9 @@ impl Job {
             return Err(why.into());
         }
         options.duration = duration;
+        if let Some(text) = &a.bandwidth {
+            options.bandwidth = positive("--bandwidth", text)?;
+        }
         let (settings, step) = integrator_settings(a, method, default_step)?;
         let every = count("--every", &a.every)?;
         let scenario = build(kind, &mut plant, &options).map_err(|e| match e {

@@ -4,10 +4,12 @@
 mod builder;
 pub mod coupling;
 pub(crate) mod joint;
+mod rotors;
 
 pub use builder::{BodySpec, ModelBuilder};
 pub use coupling::{FourBar, LinearCoupling, Mechanism};
 pub use joint::JointModel;
+pub use rotors::RotorSpec;
 
 use crate::spatial::{RigidInertia, SpatialTransform};
 use crate::subsystem::{Node, Subsystem};

@@ -9,6 +9,7 @@
 //! markers `l_sole` / `r_sole`. The box's edge lengths are recovered from its inertia
 //! (`a^2 = 6 (I_yy + I_zz - I_xx) / m`, etc.), so they follow the parameter file.
 
+use super::armature::{with_rotors, Armature};
 use super::{Plant, PlantConfig};
 use crate::contact::{sole_rectangle, FootSpec};
 use crate::drive::{Actuator, Transmission};
@@ -190,19 +191,24 @@ impl UrdfFeet {
     }
 }
 
-/// Gear ratio given to every URDF joint's motor (URDF has no drive data; the rotor inertia is
-/// not part of the model).
+/// Gear ratio given to every URDF joint's motor and rotor (URDF has no drive data).
 pub const URDF_GEAR_RATIO: f64 = 100.0;
 
 /// Plant of a URDF model with a floating base: every revolute/prismatic joint is actuated
-/// through a rigid gear of [`URDF_GEAR_RATIO`]; `feet` name the sole links.
+/// through a rigid gear of [`URDF_GEAR_RATIO`]; `feet` name the sole links; `armature` gives
+/// the reflected rotor inertia `N^2 J` of the joints it names, added as geared rotor bodies
+/// (thesis 3.1, see [`Armature`]; URDF has no rotor data, so without it the drives carry none).
 ///
-/// URDF has no rotor inertias, so the motor-side friction reflected through the gear
-/// (`N^2 tau_c / omega_eps` at rest: 50 N m s/rad with the defaults) would act on light links
-/// (a G1 ankle-roll subtree has ~4e-4 kg m^2) with rates far beyond any explicit step: the
-/// drives of URDF plants are lossless ([`crate::drive::FrictionParams::none`]), whatever
-/// `config.friction` says.
-pub fn urdf_plant(path: &Path, feet: &UrdfFeet, config: PlantConfig) -> Result<Plant, SimError> {
+/// The motor-side friction reflected through the gear (`N^2 tau_c / omega_eps` at rest:
+/// 50 N m s/rad with the defaults) would act on light links (a G1 ankle-roll subtree has
+/// ~4e-4 kg m^2 without rotors) with rates far beyond any explicit step: the drives of URDF
+/// plants are lossless ([`crate::drive::FrictionParams::none`]), whatever `config.friction` says.
+pub fn urdf_plant(
+    path: &Path,
+    feet: &UrdfFeet,
+    armature: &[Armature],
+    config: PlantConfig,
+) -> Result<Plant, SimError> {
     let opts = UrdfOptions {
         floating: true,
         reject_mimic: false,
@@ -211,7 +217,8 @@ pub fn urdf_plant(path: &Path, feet: &UrdfFeet, config: PlantConfig) -> Result<P
         what: "urdf".into(),
         reason: e.to_string(),
     })?;
-    let m = &u.model;
+    let model = with_rotors(&u.model, armature, URDF_GEAR_RATIO)?;
+    let m = &model;
     let config = PlantConfig {
         friction: crate::drive::FrictionParams::none(),
         ..config

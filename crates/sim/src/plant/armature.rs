@@ -1,0 +1,98 @@
+//! Drive rotors of URDF plants: URDF has no motor data, so the reflected rotor inertia
+//! ("armature" `N^2 J`, kg m^2) of the joints is given by joint-name patterns and enters the
+//! model as geared rotor bodies (thesis 3.1, [`Model::with_geared_rotors`]).
+
+use crate::error::SimError;
+use biped_dynamics::{JointModel, Model, RotorSpec};
+
+/// Reflected rotor inertia for the joints whose name matches `pattern` (`*` matches any run of
+/// characters, e.g. `*_knee_joint`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Armature {
+    /// Joint-name pattern.
+    pub pattern: String,
+    /// `N^2 J` in kg m^2 (>= 0).
+    pub inertia: f64,
+}
+
+/// `model` with a rotor of gear ratio `ratio` on every revolute joint that an entry of
+/// `armature` names (the first matching entry wins); an entry that matches no revolute joint,
+/// or a negative or non-finite inertia, is an error.
+pub(crate) fn with_rotors(
+    model: &Model,
+    armature: &[Armature],
+    ratio: f64,
+) -> Result<Model, SimError> {
+    let invalid = |reason: String| SimError::InvalidParameter {
+        what: "armature".into(),
+        reason,
+    };
+    let revolute = |i: &usize| matches!(model.bodies()[*i].joint(), JointModel::Revolute { .. });
+    let joints: Vec<usize> = (0..model.nbodies()).filter(revolute).collect();
+    let mut used = vec![false; armature.len()];
+    let mut specs = Vec::new();
+    for j in joints {
+        let name = model.bodies()[j].joint_name();
+        let Some(k) = armature.iter().position(|a| matches(&a.pattern, name)) else {
+            continue;
+        };
+        used[k] = true;
+        let a = armature[k].inertia;
+        if !(a.is_finite() && a >= 0.0) {
+            let p = &armature[k].pattern;
+            return Err(invalid(format!(
+                "`{p}`: inertia {a} kg m^2, must be finite and >= 0"
+            )));
+        }
+        let spec = RotorSpec::from_armature(model, j, ratio, a)
+            .map_err(|e| invalid(format!("joint `{name}`: {e}")))?;
+        specs.push(spec);
+    }
+    if let Some(k) = used.iter().position(|u| !u) {
+        let p = &armature[k].pattern;
+        return Err(invalid(format!("pattern `{p}` matches no revolute joint")));
+    }
+    model
+        .with_geared_rotors(&specs)
+        .map_err(|e| invalid(e.to_string()))
+}
+
+/// Glob match with `*` as the only wildcard.
+fn matches(pattern: &str, name: &str) -> bool {
+    let mut parts = pattern.split('*');
+    let first = parts.next().unwrap_or("");
+    let Some(mut rest) = name.strip_prefix(first) else {
+        return false;
+    };
+    let parts: Vec<&str> = parts.collect();
+    let Some((last, middle)) = parts.split_last() else {
+        return rest.is_empty(); // No `*`: exact match.
+    };
+    for part in middle {
+        match rest.find(part) {
+            Some(at) => rest = &rest[at + part.len()..],
+            None => return false,
+        }
+    }
+    rest.len() >= last.len() && rest.ends_with(last)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::matches;
+
+    #[test]
+    fn glob_patterns() {
+        assert!(matches("left_knee_joint", "left_knee_joint"));
+        assert!(!matches("left_knee_joint", "left_knee_joint2"));
+        assert!(matches("*_knee_joint", "left_knee_joint"));
+        assert!(matches("*knee*", "left_knee_joint"));
+        assert!(matches("*", ""));
+        assert!(matches("left_*_joint", "left_hip_pitch_joint"));
+        assert!(!matches("left_*_joint", "right_hip_pitch_joint"));
+        assert!(!matches("*_ankle_*_joint", "left_knee_joint"));
+        assert!(matches("a*a", "aa"));
+        assert!(!matches("a*a", "a"));
+        assert!(matches("*_hip_*", "left_hip_roll_joint"));
+    }
+}
