@@ -11,8 +11,8 @@ use biped_sim::simulation::Summary;
 use nalgebra::Vector3;
 use std::path::Path;
 
-/// Reflected rotor inertias `N^2 J` of the G1's joints \[kg m^2], from Unitree's motor data
-/// (rotor inertias and planetary stages of the 7520-14.3, 7520-22.5, 5020-16 and 4010-25
+/// Reflected rotor inertias `N^2 J` of the G1's joints \[kg m^2], from Unitree's motor data as
+/// listed in mujocolab/mjlab's G1 configuration (rotor inertias and planetary stages of the 7520-14.3, 7520-22.5, 5020-16 and 4010-25
 /// motors; the ankles and waist pitch/roll are driven by two 5020 each), first match wins.
 const G1_ARMATURE: [(&str, f64); 11] = [
     ("*_hip_pitch_joint", 0.0102),
