@@ -49,18 +49,37 @@ impl Plant {
         Ok(a)
     }
 
+    /// Why `m` has no Cholesky factor: the actuated joint of the first pivot that vanishes (in
+    /// coordinate order), i.e. a joint whose motion moves no inertia beyond its ancestors'
+    /// (e.g. a URDF joint to massless or point-mass links without rotor inertia).
+    fn singular_mass_matrix(&self, m: &nalgebra::DMatrix<f64>) -> SimError {
+        let reason = match first_vanishing_pivot(m)
+            .and_then(|v| self.actuators.iter().find(|a| a.joint_v == v))
+        {
+            Some(a) => format!(
+                "not positive definite: joint `{}` moves no inertia of its own (massless or \
+                 point-mass links); give its drive a rotor inertia (armature)",
+                a.name
+            ),
+            None => "not positive definite".into(),
+        };
+        SimError::InvalidParameter {
+            what: "mass matrix".into(),
+            reason,
+        }
+    }
+
     /// Inertias seen by each actuator at `q` (see [`ActuatorInertia`]).
     pub fn actuator_inertias(
         &mut self,
         q: &DVector<f64>,
     ) -> Result<Vec<ActuatorInertia>, SimError> {
         let m = biped_dynamics::mass_matrix(&self.model, &mut self.data, q)?.clone();
-        let minv = m.clone().cholesky().map(|c| c.inverse()).ok_or_else(|| {
-            SimError::InvalidParameter {
-                what: "mass matrix".into(),
-                reason: "not positive definite".into(),
-            }
-        })?;
+        let minv = m
+            .clone()
+            .cholesky()
+            .map(|c| c.inverse())
+            .ok_or_else(|| self.singular_mass_matrix(&m))?;
         let mut out = Vec::with_capacity(self.actuators.len());
         for a in &self.actuators {
             let link = m[(a.joint_v, a.joint_v)];
@@ -145,4 +164,42 @@ pub(super) fn gear_dampers(
             2.0 * c.gear_damping_ratio * (c.gear_stiffness * j).sqrt()
         })
         .collect())
+}
+
+/// Index of the first pivot of the Cholesky factorisation of `m` that is not positive (relative
+/// to the largest diagonal entry), `None` if every pivot is.
+fn first_vanishing_pivot(m: &nalgebra::DMatrix<f64>) -> Option<usize> {
+    let n = m.nrows();
+    let tol = 1e-12 * m.diagonal().amax();
+    let mut l = nalgebra::DMatrix::<f64>::zeros(n, n);
+    for k in 0..n {
+        let d = m[(k, k)] - (0..k).map(|j| l[(k, j)] * l[(k, j)]).sum::<f64>();
+        if d.is_nan() || d <= tol {
+            return Some(k);
+        }
+        l[(k, k)] = d.sqrt();
+        for i in k + 1..n {
+            let s = m[(i, k)] - (0..k).map(|j| l[(i, j)] * l[(k, j)]).sum::<f64>();
+            l[(i, k)] = s / l[(k, k)];
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::first_vanishing_pivot;
+    use nalgebra::DMatrix;
+
+    #[test]
+    fn vanishing_pivot_is_found_in_coordinate_order() {
+        let good = DMatrix::from_row_slice(3, 3, &[4.0, 1.0, 0.0, 1.0, 3.0, 1.0, 0.0, 1.0, 2.0]);
+        assert_eq!(first_vanishing_pivot(&good), None);
+        // Coordinate 2 moves exactly what coordinate 0 moves: its pivot vanishes.
+        let b = DMatrix::from_row_slice(3, 2, &[1.0, 0.0, 0.0, 1.0, 1.0, 0.0]);
+        let singular = &b * b.transpose();
+        assert_eq!(first_vanishing_pivot(&singular), Some(2));
+        let zero_row = DMatrix::from_row_slice(2, 2, &[1.0, 0.0, 0.0, 0.0]);
+        assert_eq!(first_vanishing_pivot(&zero_row), Some(1));
+    }
 }
