@@ -234,14 +234,15 @@ fn type3_defaults_to_a_tenth_of_a_millisecond() {
     assert_eq!(s["layout"]["nv"].as_u64(), Some(47));
 }
 
-/// The G1 in a bent-knee pose, soles spanning its URDF contact spheres (as the library's
-/// `sim_urdf` test).
-#[test]
-fn urdf_robot_stands_on_its_soles() {
-    let g1 = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/crates/dynamics/data/g1_29dof_rev_1_0.urdf"
-    );
+/// The bundled Unitree G1.
+const G1: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/crates/dynamics/data/g1_29dof_rev_1_0.urdf"
+);
+
+/// `biped simulate` on the G1 in a bent-knee pose, soles spanning its URDF contact spheres (as
+/// the library's `sim_urdf` tests), with `extra` options.
+fn simulate_g1(name: &str, extra: &[&str]) -> (Output, PathBuf) {
     let pose: Vec<String> = ["left", "right"]
         .iter()
         .flat_map(|s| {
@@ -250,24 +251,26 @@ fn urdf_robot_stands_on_its_soles() {
         })
         .collect();
     let pose = pose.join(",");
-    let (out, dir) = simulate(
-        "g1",
-        &[
-            "--urdf",
-            g1,
-            "--floating",
-            "--feet",
-            "left_ankle_roll_link,right_ankle_roll_link",
-            "--sole-center",
-            "0.035,0,-0.035",
-            "--sole-size",
-            "0.17,0.055",
-            "--pose",
-            &pose,
-            "--duration",
-            "0.3",
-        ],
-    );
+    let mut args = vec![
+        "--urdf",
+        G1,
+        "--floating",
+        "--feet",
+        "left_ankle_roll_link,right_ankle_roll_link",
+        "--sole-center",
+        "0.035,0,-0.035",
+        "--sole-size",
+        "0.17,0.055",
+        "--pose",
+        &pose,
+    ];
+    args.extend_from_slice(extra);
+    simulate(name, &args)
+}
+
+#[test]
+fn urdf_robot_stands_on_its_soles() {
+    let (out, dir) = simulate_g1("g1", &["--duration", "0.3"]);
     let s = summary(&out, &dir);
     assert_eq!(s["actuators"].as_u64(), Some(29));
     assert_eq!(s["layout"]["ncontact"].as_u64(), Some(32));
@@ -286,41 +289,16 @@ fn urdf_robot_stands_on_its_soles() {
     );
 }
 
-/// `--armature` adds geared rotor bodies and leaves the coordinates alone; the G1 with its
-/// motors' rotor inertia and a 20 rad/s PD passes `stand --check` (exit status 0).
+/// `--armature` adds rotor bodies and leaves the coordinates alone; the G1 with its motors'
+/// rotor inertia and a 20 rad/s PD passes `stand --check` (exit status 0).
 #[test]
 fn urdf_rotors_from_armature() {
-    let g1 = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/crates/dynamics/data/g1_29dof_rev_1_0.urdf"
-    );
-    let pose = "left_hip_pitch_joint=-0.2,left_knee_joint=0.4,left_ankle_pitch_joint=-0.2,\
-                right_hip_pitch_joint=-0.2,right_knee_joint=0.4,right_ankle_pitch_joint=-0.2";
     let armature = "*_hip_pitch_joint=0.0102,*_hip_yaw_joint=0.0102,waist_yaw_joint=0.0102,\
                     *_hip_roll_joint=0.0251,*_knee_joint=0.0251,*_ankle_*=0.00722,\
                     waist_*=0.00722,*_wrist_pitch_joint=0.00425,*_wrist_yaw_joint=0.00425,\
                     *=0.00361";
-    let (out, dir) = simulate(
-        "g1_rotors",
-        &[
-            "--urdf",
-            g1,
-            "--floating",
-            "--feet",
-            "left_ankle_roll_link,right_ankle_roll_link",
-            "--sole-center",
-            "0.035,0,-0.035",
-            "--sole-size",
-            "0.17,0.055",
-            "--pose",
-            pose,
-            "--armature",
-            armature,
-            "--bandwidth",
-            "20",
-            "--check",
-        ],
-    );
+    let extra = ["--armature", armature, "--bandwidth", "20", "--check"];
+    let (out, dir) = simulate_g1("g1_rotors", &extra);
     let s = summary(&out, &dir);
     assert_eq!(s["layout"]["nv"].as_u64(), Some(35));
     assert_eq!(s["actuators"].as_u64(), Some(29));
@@ -386,10 +364,7 @@ fn default_output_folder_is_per_scenario() {
 
 #[test]
 fn bad_inputs_fail_with_one_line() {
-    let g1 = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/crates/dynamics/data/g1_29dof_rev_1_0.urdf"
-    );
+    let g1 = G1;
     let feet = "left_ankle_roll_link,right_ankle_roll_link";
     let cases: &[(&[&str], &[&str])] = &[
         (&["--scenario", "walk"], &["--scenario", "walk"]),
