@@ -4,13 +4,16 @@
 //! previous call is reused as by RK4's first stage after the sensors' state pass), the state
 //! pass, the forward dynamics alone, contact + drives without dynamics, and the contact layer
 //! alone; the recorder's share: the same run with every signal recorded each
-//! cycle (as `biped simulate` does) and writing its CSV.
+//! cycle (as `biped simulate` does) and writing its CSV. Beside it, 0.2 s of `stand` on the
+//! bundled G1 URDF without and with its 29 drive rotors (`Armature`, Harmonic Drive rotor
+//! bodies), to show what the rotor sub-systems cost.
 
 use biped_dynamics::{forward_dynamics, Algorithm, Data, Wrench};
 use biped_robots::lola::LolaType;
+use biped_sim::contact::ContactParams;
 use biped_sim::contact::ContactSet;
 use biped_sim::ode::{Method, OdeSystem};
-use biped_sim::plant::{lola_plant, Plant, PlantConfig};
+use biped_sim::plant::{lola_plant, urdf_plant, Armature, Plant, PlantConfig, UrdfFeet};
 use biped_sim::record::Recorder;
 use biped_sim::scenario::{build, Scenario, ScenarioKind, ScenarioOptions};
 use biped_sim::simulation::Signals;
@@ -28,6 +31,66 @@ fn setup() -> (Plant, Scenario) {
     };
     let sc = build(ScenarioKind::Stand, &mut lp.plant, &opts).unwrap();
     (lp.plant, sc)
+}
+
+/// The G1 in its bent-knee pose on soft sole points, with a rotor of reflected inertia 0.01 kg
+/// m^2 on every joint when `rotors`, and a 20 rad/s PD.
+fn setup_g1(rotors: bool) -> (Plant, Scenario) {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../dynamics/data/g1_29dof_rev_1_0.urdf");
+    let mut feet = UrdfFeet::new("left_ankle_roll_link", "right_ankle_roll_link");
+    (feet.center, feet.length, feet.width) =
+        (nalgebra::Vector3::new(0.035, 0.0, -0.035), 0.17, 0.055);
+    let contact = ContactParams {
+        stiffness: 5e4,
+        damping: 100.0,
+        tangential_stiffness: 5e4,
+        tangential_damping: 100.0,
+        ..ContactParams::default()
+    };
+    let config = PlantConfig {
+        contact,
+        ..PlantConfig::default()
+    };
+    let armature = rotors.then(|| Armature {
+        pattern: "*".into(),
+        inertia: 0.01,
+    });
+    let mut plant = urdf_plant(&path, &feet, armature.as_slice(), config).unwrap();
+    let pose = ["left", "right"]
+        .iter()
+        .flat_map(|s| {
+            [("hip_pitch", -0.2), ("knee", 0.4), ("ankle_pitch", -0.2)]
+                .map(|(j, a)| (format!("{s}_{j}_joint"), a))
+        })
+        .collect();
+    let opts = ScenarioOptions {
+        duration: Some(SIM_TIME),
+        bandwidth: 20.0,
+        pose,
+        ..ScenarioOptions::default()
+    };
+    let sc = build(ScenarioKind::Stand, &mut plant, &opts).unwrap();
+    (plant, sc)
+}
+
+/// 0.2 s of `stand` on the G1 without and with drive rotors.
+fn stand_g1(c: &mut Criterion) {
+    let mut g = c.benchmark_group("stand_g1_urdf_rk4_1khz");
+    g.sample_size(10);
+    for (name, rotors) in [
+        ("0.2 s simulated", false),
+        ("0.2 s simulated, 29 rotors", true),
+    ] {
+        g.bench_function(name, |b| {
+            b.iter_batched(
+                || setup_g1(rotors),
+                |(plant, sc)| black_box(sc.run(plant, Method::Rk4, &mut |_| Ok(())).unwrap().0),
+                BatchSize::LargeInput,
+            )
+        });
+    }
+    g.finish();
 }
 
 fn stand(c: &mut Criterion) {
@@ -145,5 +208,5 @@ fn recorded(plant: Plant, sc: Scenario, mut signals: Signals, mut rec: Recorder)
     rec
 }
 
-criterion_group!(benches, stand);
+criterion_group!(benches, stand, stand_g1);
 criterion_main!(benches);
