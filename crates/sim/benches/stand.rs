@@ -41,15 +41,8 @@ fn setup_g1(rotors: bool) -> (Plant, Scenario) {
     let mut feet = UrdfFeet::new("left_ankle_roll_link", "right_ankle_roll_link");
     (feet.center, feet.length, feet.width) =
         (nalgebra::Vector3::new(0.035, 0.0, -0.035), 0.17, 0.055);
-    let contact = ContactParams {
-        stiffness: 5e4,
-        damping: 100.0,
-        tangential_stiffness: 5e4,
-        tangential_damping: 100.0,
-        ..ContactParams::default()
-    };
     let config = PlantConfig {
-        contact,
+        contact: ContactParams::light_feet(),
         ..PlantConfig::default()
     };
     let armature = rotors.then(|| Armature {

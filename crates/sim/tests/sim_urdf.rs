@@ -36,18 +36,8 @@ fn g1_stand(armature: &[Armature], bandwidth: f64, duration: f64) -> Summary {
     feet.center = Vector3::new(0.035, 0.0, -0.035);
     feet.length = 0.17;
     feet.width = 0.055;
-    // The G1's 0.6 kg feet: Lola's contact (2e5 N/m, 400 N s/m per point) would put the
-    // foot's damping eigenvalue at 8 * 400 / 0.6 ~ 5300 1/s, outside RK4's stability at
-    // h = 1 ms. Softer points:
-    let contact = ContactParams {
-        stiffness: 5e4,
-        damping: 100.0,
-        tangential_stiffness: 5e4,
-        tangential_damping: 100.0,
-        ..ContactParams::default()
-    };
     let config = PlantConfig {
-        contact,
+        contact: ContactParams::light_feet(),
         ..PlantConfig::default()
     };
     let mut plant = urdf_plant(&path, &feet, armature, config).unwrap();

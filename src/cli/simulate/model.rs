@@ -4,6 +4,7 @@
 use super::parse::{names, numbers, parse_armature};
 use super::SimulateArgs;
 use biped_robots::lola::LolaType;
+use biped_sim::contact::ContactParams;
 use biped_sim::plant::{lola_plant, urdf_plant, Armature, Plant, PlantConfig, UrdfFeet};
 use biped_sim::scenario::{ScenarioKind, ScenarioOptions, SwayJoints};
 use biped_sim::SimError;
@@ -16,11 +17,6 @@ type SetupError = Box<dyn std::error::Error>;
 /// Fixed step of Type 3 \[s]: its elastic gears (~9000 rad/s on the toe) need <= 0.25 ms.
 const TYPE3_STEP: f64 = 1e-4;
 
-/// Contact stiffness and damping per point of URDF robots \[N/m, N s/m]: Lola's 2e5 / 400 puts
-/// the damping eigenvalue of a light foot (`8 d / m_foot`, ~5000 1/s for the G1's 0.6 kg
-/// feet) outside RK4's stability region at 1 ms, with or without `--armature` rotors.
-const URDF_CONTACT: [f64; 2] = [5e4, 100.0];
-
 /// Plant, scenario options, label and default fixed step of the Lola-like biped.
 pub type Source = (Plant, ScenarioOptions, String, f64);
 
@@ -28,7 +24,7 @@ pub type Source = (Plant, ScenarioOptions, String, f64);
 pub fn lola_source(a: &SimulateArgs) -> Result<Source, SetupError> {
     let text = a.lola.as_deref().unwrap_or("type2");
     let variant: LolaType = text.parse().map_err(|e| format!("--lola: {e}"))?;
-    let lp = lola_plant(variant, plant_config(a, None)?)?;
+    let lp = lola_plant(variant, plant_config(a, ContactParams::default())?)?;
     let options = ScenarioOptions::lola();
     let step = match variant {
         LolaType::Type2 => options.period,
@@ -68,7 +64,7 @@ pub fn urdf_source(
     }
     let feet = urdf_feet(a)?;
     let armature = armature(a)?;
-    let config = plant_config(a, Some(URDF_CONTACT))?;
+    let config = plant_config(a, ContactParams::light_feet())?;
     let plant = urdf_plant(path, &feet, &armature, config).map_err(|e| match e {
         SimError::InvalidParameter { what, reason } if what == "armature" => {
             format!("--armature: {reason} in {}", path.display())
@@ -139,10 +135,9 @@ fn sway_joints(a: &SimulateArgs, kind: ScenarioKind) -> Result<Option<SwayJoints
     }
 }
 
-/// Plant options: `--contact K,D` (else `default` or the library's contact law).
-fn plant_config(a: &SimulateArgs, default: Option<[f64; 2]>) -> Result<PlantConfig, SetupError> {
-    let mut config = PlantConfig::default();
-    let kd = match &a.contact {
+/// Plant options: `--contact K,D` on top of the `base` contact law.
+fn plant_config(a: &SimulateArgs, base: ContactParams) -> Result<PlantConfig, SetupError> {
+    let contact = match &a.contact {
         Some(text) => {
             let v = numbers(text, 2, "--contact")?;
             if v[0] <= 0.0 || v[1] < 0.0 {
@@ -150,14 +145,12 @@ fn plant_config(a: &SimulateArgs, default: Option<[f64; 2]>) -> Result<PlantConf
                     format!("--contact: need stiffness > 0 and damping >= 0, got {text}").into(),
                 );
             }
-            Some([v[0], v[1]])
+            base.with_spring_damper(v[0], v[1])
         }
-        None => default,
+        None => base,
     };
-    if let Some([k, d]) = kd {
-        let c = &mut config.contact;
-        (c.stiffness, c.damping) = (k, d);
-        (c.tangential_stiffness, c.tangential_damping) = (k, d);
-    }
-    Ok(config)
+    Ok(PlantConfig {
+        contact,
+        ..PlantConfig::default()
+    })
 }
