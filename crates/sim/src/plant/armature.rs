@@ -3,7 +3,7 @@
 //! model as geared rotor bodies (thesis 3.1, [`Model::with_geared_rotors`]).
 
 use crate::error::SimError;
-use biped_dynamics::{JointModel, Model, RotorSpec};
+use biped_dynamics::{Body, JointModel, Model, RotorSpec};
 
 /// Reflected rotor inertia for the joints whose name matches `pattern` (`*` matches any run of
 /// characters, e.g. `*_knee_joint`).
@@ -27,12 +27,11 @@ pub(crate) fn with_rotors(
         what: "armature".into(),
         reason,
     };
-    let revolute = |i: &usize| matches!(model.bodies()[*i].joint(), JointModel::Revolute { .. });
-    let joints: Vec<usize> = (0..model.nbodies()).filter(revolute).collect();
+    let revolute = |(_, b): &(usize, &Body)| matches!(b.joint(), JointModel::Revolute { .. });
     let mut used = vec![false; armature.len()];
     let mut specs = Vec::new();
-    for j in joints {
-        let name = model.bodies()[j].joint_name();
+    for (j, body) in model.bodies().iter().enumerate().filter(revolute) {
+        let name = body.joint_name();
         let Some(k) = armature.iter().position(|a| matches(&a.pattern, name)) else {
             continue;
         };
