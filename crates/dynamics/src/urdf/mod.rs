@@ -12,17 +12,21 @@
 //! - `<inertial>`: mass, CoM at the inertial origin `xyz`, and the tensor given about the CoM in
 //!   the axes rotated by the inertial origin `rpy` (`R = Rz(yaw) Ry(pitch) Rx(roll)`).
 //! - Rotational inertias with all entries below 1e-12 kg m^2 are taken as zero (with a warning).
-//! - Meshes, visuals, collisions, limits and transmissions are ignored; `<visual>`,
+//! - Joint limits and `<dynamics>` are read into [`UrdfModel::joints`] ([`JointProps`], see
+//!   `joints` for their conventions); the model itself carries none of them.
+//! - Meshes, visuals, collisions and transmissions are ignored; `<visual>`,
 //!   `<collision>` and `<material>` elements are removed before parsing (see `strip`). `<mimic>` tags are
 //!   ignored with a warning (the joints stay independent) unless [`UrdfOptions::reject_mimic`].
 //! - Bodies and coordinates follow a depth-first traversal from the root, children in file order.
 
 mod error;
+mod joints;
 mod locate;
 mod strip;
 mod tree;
 
 pub use error::{Location, UrdfError};
+pub use joints::JointProps;
 
 use crate::{BodyId, Model};
 #[cfg(doc)]
@@ -56,6 +60,9 @@ pub struct UrdfModel {
     pub model: Model,
     /// Every URDF link, in traversal order, with the body it was merged into.
     pub links: Vec<LinkFrame>,
+    /// Limits and passive dynamics of every movable joint except the floating root, in body
+    /// order.
+    pub joints: Vec<JointProps>,
     /// Non-fatal issues (ignored `<mimic>` tags, negligible inertias), one line each, located.
     pub warnings: Vec<String>,
 }

@@ -1,6 +1,7 @@
 //! Conversion of a parsed URDF tree into bodies: topology checks, fixed-joint merging.
 
 use super::error::{Location, UrdfError};
+use super::joints::joint_props;
 use super::locate::element_line;
 use super::{LinkFrame, UrdfModel, UrdfOptions};
 use crate::{BodyId, BodySpec, JointModel, ModelBuilder, RigidInertia};
@@ -18,7 +19,7 @@ pub(super) struct Source<'a> {
 
 impl Source<'_> {
     /// Location of the element `<tag name="name">`.
-    fn at(&self, tag: &str, name: &str) -> Location {
+    pub(super) fn at(&self, tag: &str, name: &str) -> Location {
         Location {
             file: self.file.to_string(),
             line: element_line(self.xml, tag, name),
@@ -27,7 +28,7 @@ impl Source<'_> {
     }
 
     /// An [`UrdfError::Invalid`] at `<tag name="name">`.
-    fn invalid(&self, tag: &str, name: &str, field: &str, problem: String) -> UrdfError {
+    pub(super) fn invalid(&self, tag: &str, name: &str, field: &str, problem: String) -> UrdfError {
         UrdfError::Invalid {
             at: self.at(tag, name),
             field: field.to_string(),
@@ -64,6 +65,7 @@ pub(super) fn convert(
     let mut frames: Vec<Option<Frame>> = vec![None; robot.links.len()];
     let mut order = Vec::with_capacity(robot.links.len());
     let mut warnings = Vec::new();
+    let mut joints = Vec::new();
     let root = &robot.links[topo.root];
     frames[topo.root] = Some(if options.floating {
         bodies.push((
@@ -109,6 +111,10 @@ pub(super) fn convert(
                     inertia,
                 };
                 bodies.push((spec, src.at("joint", &joint.name)));
+                let body = bodies.len() - 1;
+                if joint.joint_type != JointType::Floating {
+                    joints.push(joint_props(joint, body, src, &mut warnings)?);
+                }
                 Frame {
                     body: Some(bodies.len() - 1),
                     pose: Isometry3::identity(),
@@ -133,6 +139,7 @@ pub(super) fn convert(
     Ok(UrdfModel {
         model,
         links,
+        joints,
         warnings,
     })
 }
