@@ -58,6 +58,12 @@ pub struct SimulateArgs {
     /// e.g. `*_knee_joint=0.025,*_ankle_*=0.0072` (`*` matches any run; first match wins).
     #[arg(long, value_name = "JOINT=KG_M2,...", allow_hyphen_values = true)]
     armature: Option<String>,
+    /// Ignore the URDF's joint ranges (no end stops at `<limit lower upper>`).
+    #[arg(long)]
+    no_end_stops: bool,
+    /// Ignore the URDF's joint damping and friction (`<dynamics>`).
+    #[arg(long)]
+    no_joint_friction: bool,
     /// Contact stiffness [N/m] and damping [N s/m] of each sole point, normal and tangential
     /// (default: Lola 2e5,400; URDF 5e4,100 for the light feet of URDF robots).
     #[arg(long, value_name = "K,D", allow_hyphen_values = true)]

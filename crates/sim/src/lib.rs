@@ -5,13 +5,15 @@
 //! - [`record`]: time series of named signals to CSV and SVG.
 //! - [`plant`]: the robot plant (model layers of Table 2.3) as one [`ode::OdeSystem`], with
 //!   [`drive`] models and the [`contact`] layer; [`sensors`] and [`controller`] close the loop
-//!   of Fig. 2.1 in [`simulation`]; [`scenario`] gives the drop / stand / sway set-ups.
+//!   of Fig. 2.1 in [`simulation`]; [`passive`] adds a robot description's end stops and joint
+//!   friction; [`scenario`] gives the drop / stand / sway set-ups.
 
 pub mod contact;
 pub mod controller;
 pub mod drive;
 pub mod error;
 pub mod ode;
+pub mod passive;
 pub mod plant;
 pub mod record;
 pub mod scenario;

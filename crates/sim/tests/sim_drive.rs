@@ -42,6 +42,7 @@ fn plant(mode: DriveMode, friction: FrictionParams) -> Plant {
         motor: MotorParams::default(),
         friction,
         nominal_ratio: N,
+        effort: f64::INFINITY,
     };
     let config = PlantConfig {
         mode,

@@ -142,3 +142,37 @@ fn armature_patterns_must_name_revolute_joints() {
     let err = urdf_plant(&path, &feet, &negative, PlantConfig::default()).unwrap_err();
     assert!(err.to_string().contains("armature"), "{err}");
 }
+
+/// The G1 plant carries the URDF's joint ranges as end stops and its efforts as torque limits
+/// (read back from the importer's `JointProps`); switching the layer off leaves none.
+#[test]
+fn g1_plant_has_the_urdf_ranges_and_efforts() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../dynamics/data/g1_29dof_rev_1_0.urdf");
+    let opts = biped_dynamics::urdf::UrdfOptions {
+        floating: true,
+        reject_mimic: false,
+    };
+    let props = biped_dynamics::urdf::load_file(&path, &opts)
+        .unwrap()
+        .joints;
+    let feet = UrdfFeet::new("left_ankle_roll_link", "right_ankle_roll_link");
+    let plant = urdf_plant(&path, &feet, &[], PlantConfig::default()).unwrap();
+    let stops = plant.passive().stops();
+    assert_eq!(stops.len(), props.len());
+    assert!(
+        plant.passive().friction().is_empty(),
+        "the G1 has no <dynamics>"
+    );
+    for j in &props {
+        let s = stops.iter().find(|s| s.name == j.name).unwrap();
+        assert_eq!(Some([s.lower, s.upper]), j.range, "{}", j.name);
+        let a = plant.actuators().iter().find(|a| a.name == j.name).unwrap();
+        assert_eq!((Some(a.effort), a.joint_v), (j.effort, s.v), "{}", j.name);
+        let n_kt = a.nominal_ratio * a.motor.torque_constant;
+        assert!((a.motor.max_current * n_kt - a.effort).abs() < 1e-12 * a.effort);
+    }
+    let mut config = PlantConfig::default();
+    config.passive.end_stops = false;
+    let plant = urdf_plant(&path, &feet, &[], config).unwrap();
+    assert!(plant.passive().is_empty());
+}

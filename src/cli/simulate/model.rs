@@ -41,6 +41,8 @@ pub fn urdf_only(a: &SimulateArgs) -> Result<(), String> {
         ("--sole-center", a.sole_center.is_some()),
         ("--sole-size", a.sole_size.is_some()),
         ("--armature", a.armature.is_some()),
+        ("--no-end-stops", a.no_end_stops),
+        ("--no-joint-friction", a.no_joint_friction),
         ("--sway-joints", a.sway_joints.is_some()),
     ];
     match given.iter().find(|(_, on)| *on) {
@@ -64,7 +66,9 @@ pub fn urdf_source(
     }
     let feet = urdf_feet(a)?;
     let armature = armature(a)?;
-    let config = plant_config(a, ContactParams::light_feet())?;
+    let mut config = plant_config(a, ContactParams::light_feet())?;
+    config.passive.end_stops = !a.no_end_stops;
+    config.passive.joint_friction = !a.no_joint_friction;
     let plant = urdf_plant(path, &feet, &armature, config).map_err(|e| match e {
         SimError::InvalidParameter { what, reason } if what == "armature" => {
             format!("--armature: {reason} in {}", path.display())

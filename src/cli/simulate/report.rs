@@ -78,6 +78,13 @@ pub fn print_report(
         "  contact force: final {:.1} N, max {:.1} N (weight {:.1} N)",
         s.final_contact_force, s.max_contact_force, s.weight
     );
+    let p = &s.passive;
+    if let Some(f) = &p.fastest {
+        println!(
+            "  joint layer: {} end stops, {} damping/friction laws (fastest: {} of `{}`, {:.3e} 1/s)",
+            p.end_stops, p.friction_laws, f.law, f.joint, f.rate
+        );
+    }
     for c in &s.checks {
         let verdict = if c.passed { "ok" } else { "FAILED" };
         println!(

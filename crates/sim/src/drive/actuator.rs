@@ -104,6 +104,10 @@ pub struct Actuator {
     /// Nominal `|d omega_m / d qdot_joint|` at the initial configuration (1 for `Direct`), for
     /// converting joint torques to motor torques in simple controllers.
     pub nominal_ratio: f64,
+    /// Joint torque limit (e.g. a URDF `effort`): torque commands are clamped to
+    /// `[-effort, effort]` \[N m or N]; `f64::INFINITY` = none. (Current and voltage commands are
+    /// limited by the motor's `max_current` instead.)
+    pub effort: f64,
 }
 
 /// Motor-side quantities of one actuator at one instant.
@@ -249,6 +253,10 @@ impl Actuator {
         v: &[f64],
         gen: &mut [f64],
     ) -> DriveState {
+        let cmd = match mode {
+            DriveMode::Torque => cmd.clamp(-self.effort, self.effort),
+            _ => cmd,
+        };
         let Some(row) = row else {
             gen[self.joint_v] += cmd;
             return DriveState {

@@ -17,6 +17,9 @@ pub enum Method {
     Dopri5,
 }
 
+/// Real root of `1 - x + x^2/2 - x^3/6 + x^4/24 = 1` (RK4's real stability interval).
+const RK4_DECAY_BOUND: f64 = 2.785_293_563_405_282;
+
 impl Method {
     /// All methods, in declaration order.
     pub const ALL: [Method; 4] = [
@@ -39,6 +42,18 @@ impl Method {
     /// Whether the method steps with the fixed step [`Settings::h`].
     pub fn is_fixed_step(self) -> bool {
         !matches!(self, Method::Dopri5)
+    }
+
+    /// Largest `h lambda` for which a fixed-step method's solution of the decay `y' = -lambda y`
+    /// does not grow (the real stability interval: `|1 - x| <= 1` for Euler, whose update the
+    /// symplectic scheme's velocity shares, and `|1 - x + x^2/2 - x^3/6 + x^4/24| <= 1`, i.e.
+    /// `x <= 2.785`, for RK4); `None` for adaptive Dopri5.
+    pub fn decay_stability_bound(self) -> Option<f64> {
+        match self {
+            Method::Euler | Method::Symplectic => Some(2.0),
+            Method::Rk4 => Some(RK4_DECAY_BOUND),
+            Method::Dopri5 => None,
+        }
     }
 }
 

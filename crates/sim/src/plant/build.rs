@@ -14,6 +14,7 @@ use super::{Plant, PlantConfig};
 use crate::contact::{sole_rectangle, FootSpec};
 use crate::drive::{Actuator, Transmission};
 use crate::error::SimError;
+use crate::passive::JointSpec;
 use biped_dynamics::model::Mechanism;
 use biped_dynamics::urdf::{self, UrdfOptions};
 use biped_dynamics::{BodyId, JointModel, Model};
@@ -93,6 +94,7 @@ fn actuator(
         motor: c.motor,
         friction: c.friction,
         nominal_ratio: 1.0,
+        effort: f64::INFINITY,
     };
     let q0 = m.neutral();
     a.nominal_ratio = match (t, a.motor_row(m, q0.as_slice())?) {
@@ -232,16 +234,22 @@ pub fn urdf_plant(
             let t = Transmission::Gear {
                 ratio: URDF_GEAR_RATIO,
             };
-            actuators.push(actuator(
+            let mut a = actuator(
                 m,
                 &config,
                 b.joint_name().to_string(),
                 b.q_index(),
                 b.v_index(),
                 t,
-            )?);
+            )?;
+            let props = u.joints.iter().find(|j| j.name == a.name);
+            if let Some(effort) = props.and_then(|j| j.effort) {
+                limit_effort(&mut a, effort);
+            }
+            actuators.push(a);
         }
     }
+    let passive = urdf_joint_specs(m, &u.joints);
     let mut specs = Vec::new();
     for (name, link) in &feet.links {
         let lf = u
@@ -262,5 +270,30 @@ pub fn urdf_plant(
             reference: to_body(feet.center),
         });
     }
-    Plant::new(m.clone(), actuators, &specs, Vec::new(), config)
+    Plant::new(m.clone(), actuators, &specs, Vec::new(), config)?.with_passive(&passive)
+}
+
+/// Caps actuator `a` at the joint torque `effort`: torque commands directly, current commands
+/// through the motor's current limit `effort / (N k_t)`.
+fn limit_effort(a: &mut Actuator, effort: f64) {
+    a.effort = effort;
+    a.motor.max_current = effort / (a.nominal_ratio * a.motor.torque_constant);
+}
+
+/// The passive joint specs (range, damping, friction) of the URDF's movable joints.
+fn urdf_joint_specs(m: &Model, joints: &[urdf::JointProps]) -> Vec<JointSpec> {
+    joints
+        .iter()
+        .filter_map(|j| {
+            let b = m.body(j.body)?;
+            Some(JointSpec {
+                name: j.name.clone(),
+                q: b.q_index(),
+                v: b.v_index(),
+                range: j.range,
+                damping: j.damping,
+                friction: j.friction,
+            })
+        })
+        .collect()
 }

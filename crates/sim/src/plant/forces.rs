@@ -97,7 +97,8 @@ impl Plant {
         self.drive_forces(z, zdot)
     }
 
-    /// Drive torques of every actuator and elastic gear torques into `tau`; current rates into
+    /// Drive torques of every actuator, elastic gear torques and the passive joint layer
+    /// (end stops, joint friction) into `tau`; current rates into
     /// `zdot` in voltage mode. Motor rows of roller-screw rotors are refreshed at `q` by
     /// [`crate::drive::Actuator::motor_row_cached`]: a cache hit after the kinematics pass of a
     /// right-hand side, one closed-form loop closure otherwise (always correct for `q`).
@@ -127,6 +128,7 @@ impl Plant {
             tau[g.link_v] += torque;
             tau[g.motor_v] -= torque / g.ratio;
         }
+        self.passive.apply(q, v, tau);
         Ok(())
     }
 

@@ -69,17 +69,33 @@ impl Plant {
         }
     }
 
-    /// Inertias seen by each actuator at `q` (see [`ActuatorInertia`]).
-    pub fn actuator_inertias(
+    /// `M(q)` and its inverse; a singular `M` names the joint of its first vanishing pivot.
+    fn mass_matrix_and_inverse(
         &mut self,
         q: &DVector<f64>,
-    ) -> Result<Vec<ActuatorInertia>, SimError> {
+    ) -> Result<(nalgebra::DMatrix<f64>, nalgebra::DMatrix<f64>), SimError> {
         let m = biped_dynamics::mass_matrix(&self.model, &mut self.data, q)?.clone();
         let minv = m
             .clone()
             .cholesky()
             .map(|c| c.inverse())
             .ok_or_else(|| self.singular_mass_matrix(&m))?;
+        Ok((m, minv))
+    }
+
+    /// Free inertia `1 / (M^-1)_jj` of every coordinate `j` at `q` (what it moves when all
+    /// others move freely too), indexed by `v`.
+    pub fn free_inertias(&mut self, q: &DVector<f64>) -> Result<Vec<f64>, SimError> {
+        let (_, minv) = self.mass_matrix_and_inverse(q)?;
+        Ok(minv.diagonal().iter().map(|d| 1.0 / d).collect())
+    }
+
+    /// Inertias seen by each actuator at `q` (see [`ActuatorInertia`]).
+    pub fn actuator_inertias(
+        &mut self,
+        q: &DVector<f64>,
+    ) -> Result<Vec<ActuatorInertia>, SimError> {
+        let (m, minv) = self.mass_matrix_and_inverse(q)?;
         let mut out = Vec::with_capacity(self.actuators.len());
         for a in &self.actuators {
             let link = m[(a.joint_v, a.joint_v)];

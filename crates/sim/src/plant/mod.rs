@@ -28,6 +28,7 @@ use crate::drive::actuator::{DriveState, MotorRow};
 use crate::drive::{Actuator, DriveMode, FrictionParams, MotorParams};
 use crate::error::{finite, SimError};
 use crate::ode::{OdeSystem, SplitSystem};
+use crate::passive::{JointSpec, PassiveJoints, PassiveParams};
 use biped_dynamics::{Algorithm, Data, Model, Wrench};
 use biped_robots::lola::ElasticGear;
 use kinematics::QdotMap;
@@ -51,6 +52,9 @@ pub struct PlantConfig {
     pub motor: MotorParams,
     /// Motor-side friction given to every actuator by the robot builders.
     pub friction: FrictionParams,
+    /// End stops and joint friction built from the robot description ([`Plant::with_passive`]).
+    #[serde(default)]
+    pub passive: PassiveParams,
     /// Forward-dynamics algorithm (O(n) by default).
     #[serde(skip, default = "default_algorithm")]
     pub algorithm: Algorithm,
@@ -74,6 +78,7 @@ impl Default for PlantConfig {
             gear_damping_ratio: 0.05,
             motor: MotorParams::default(),
             friction: FrictionParams::default(),
+            passive: PassiveParams::default(),
             algorithm: Algorithm::On,
         }
     }
@@ -112,6 +117,8 @@ pub struct Plant {
     scratch: Vec<f64>,
     /// Contact result of the last state pass for the next right-hand side at that state.
     contact_memo: forces::ContactMemo,
+    /// End stops and joint friction ([`Self::with_passive`]; empty by default).
+    passive: PassiveJoints,
     rhs_count: u64,
 }
 
@@ -131,10 +138,12 @@ impl Plant {
                 || a.joint_v >= model.nv()
                 || a.nominal_ratio.is_nan()
                 || a.nominal_ratio <= 0.0
+                || a.effort.is_nan()
+                || a.effort <= 0.0
             {
                 return Err(SimError::InvalidParameter {
                     what: format!("actuator `{}`", a.name),
-                    reason: "joint index out of range or nominal ratio <= 0".into(),
+                    reason: "joint index out of range, nominal ratio or effort limit <= 0".into(),
                 });
             }
         }
@@ -182,8 +191,23 @@ impl Plant {
             out,
             scratch: vec![0.0; layout.dim()],
             contact_memo: forces::ContactMemo::default(),
+            passive: PassiveJoints::default(),
             rhs_count: 0,
         })
+    }
+
+    /// This plant with the end stops and joint friction of `specs`, built by
+    /// [`PassiveJoints::new`] with `config.passive` and the joints' free inertias at the
+    /// neutral configuration (replaces any earlier layer).
+    pub fn with_passive(mut self, specs: &[JointSpec]) -> Result<Self, SimError> {
+        let free = self.free_inertias(&self.model.neutral())?;
+        self.passive = PassiveJoints::new(specs, |v| free[v], &self.config.passive)?;
+        Ok(self)
+    }
+
+    /// End stops and joint friction.
+    pub fn passive(&self) -> &PassiveJoints {
+        &self.passive
     }
 
     /// The multibody model.

@@ -11,7 +11,7 @@ pub use biped_dynamics::{
     centroidal_momentum as centroidal_sample, CentroidalMomentum as CentroidalSample,
 };
 pub use signals::Signals;
-pub use summary::{Check, Summary};
+pub use summary::{Check, PassiveSummary, Summary};
 
 use crate::controller::{Commands, Controller};
 use crate::error::SimError;
@@ -59,6 +59,34 @@ fn integ(e: IntegrateError<SimError>) -> SimError {
     }
 }
 
+/// Rejects a fixed step too long for the fastest law of the plant's passive joint layer
+/// ([`crate::passive::PassiveJoints::fastest`]): `h rate` beyond the method's
+/// [`Method::decay_stability_bound`] would blow up instead of damping.
+fn check_passive_rate(
+    plant: &Plant,
+    method: Method,
+    settings: &Settings,
+    period: f64,
+) -> Result<(), SimError> {
+    let (Some(fast), Some(bound)) = (plant.passive().fastest(), method.decay_stability_bound())
+    else {
+        return Ok(());
+    };
+    let h = period / (period / settings.h).ceil();
+    if h * fast.rate <= bound {
+        return Ok(());
+    }
+    Err(SimError::InvalidParameter {
+        what: format!("joint `{}` {}", fast.joint, fast.law),
+        reason: format!(
+            "its rate {:.3e} 1/s on the joint's free inertia needs a {method} step below {:.3e} s \
+             (step {h:.3e} s): add rotor inertia (armature), shorten the step or drop the law",
+            fast.rate,
+            bound / fast.rate
+        ),
+    })
+}
+
 impl<C: Controller> Simulation<C> {
     /// Simulation from `z0` with `method`; fixed-step methods take one step per control period
     /// (`h` = period), Dopri5 uses default tolerances (rtol 1e-6, atol 1e-9).
@@ -96,6 +124,7 @@ impl<C: Controller> Simulation<C> {
             });
         }
         crate::error::finite("z0", &z0)?;
+        check_passive_rate(&plant, method, &settings, controller.period())?;
         let integrator = Integrator::new(method, n, settings)
             .map_err(|e| SimError::Integrator(e.to_string()))?;
         let sensors = Sensors::new(&plant);

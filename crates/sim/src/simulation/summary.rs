@@ -3,6 +3,7 @@
 use super::Simulation;
 use crate::controller::Controller;
 use crate::drive::DriveMode;
+use crate::passive::{PassiveJoints, PassiveRate};
 use crate::plant::StateLayout;
 use nalgebra::Vector3;
 use serde::Serialize;
@@ -60,8 +61,32 @@ pub struct Summary {
     pub final_max_speed: f64,
     /// Largest joint speed of the actuated joints at the end \[rad/s].
     pub final_max_joint_speed: f64,
+    /// The plant's passive joint layer (end stops, joint friction).
+    pub passive: PassiveSummary,
     /// Pass criteria (filled by a scenario).
     pub checks: Vec<Check>,
+}
+
+/// Size and fastest law of the plant's passive joint layer ([`crate::passive`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PassiveSummary {
+    /// Joints with end stops.
+    pub end_stops: usize,
+    /// Joints with damping or friction.
+    pub friction_laws: usize,
+    /// The fastest law, `None` for an empty layer.
+    pub fastest: Option<PassiveRate>,
+}
+
+impl PassiveSummary {
+    /// The summary of `p`.
+    pub fn of(p: &PassiveJoints) -> Self {
+        Self {
+            end_stops: p.stops().len(),
+            friction_laws: p.friction().len(),
+            fastest: p.fastest().cloned(),
+        }
+    }
 }
 
 /// Largest `|v_i|` over the non-motor coordinates.
@@ -120,6 +145,7 @@ impl Summary {
                 .sum(),
             final_max_speed: link_speed(plant, &sim.z[l.v()]),
             final_max_joint_speed: abs_max(&sim.sensors.joint_velocities),
+            passive: PassiveSummary::of(plant.passive()),
             checks: Vec::new(),
         }
     }
