@@ -488,8 +488,68 @@ fn bad_inputs_fail_with_one_line() {
             &["--armature", "only applies with --urdf"],
         ),
         (&["--bandwidth", "-3"], &["--bandwidth", "> 0"]),
+        (
+            &["--no-end-stops"],
+            &["--no-end-stops", "only applies with --urdf"],
+        ),
+        (
+            &["--no-joint-friction"],
+            &["--no-joint-friction", "only applies with --urdf"],
+        ),
     ];
     for (args, expected) in cases {
         fails_with("bad", args, expected);
     }
+}
+
+/// The G1's URDF ranges become end stops (one per revolute joint of the file, reported in the
+/// summary); a joint damping the 1 ms RK4 step cannot integrate is a one-line error naming the
+/// joint, and `--no-joint-friction` drops it.
+#[test]
+fn urdf_limits_and_joint_damping() {
+    let (out, dir) = simulate_g1("g1_limits", &["--duration", "0.05"]);
+    let s = summary(&out, &dir);
+    let text = std::fs::read_to_string(G1).unwrap();
+    let revolute = text.matches("type=\"revolute\"").count() as u64;
+    assert_eq!(s["passive"]["end_stops"].as_u64(), Some(revolute));
+    assert_eq!(s["passive"]["friction_laws"].as_u64(), Some(0));
+    let (out, dir) = simulate_g1("g1_no_stops", &["--duration", "0.05", "--no-end-stops"]);
+    assert_eq!(
+        summary(&out, &dir)["passive"]["end_stops"].as_u64(),
+        Some(0)
+    );
+
+    // 5 N m s/rad on the wrist (free inertia ~1e-3 kg m^2): a rate of thousands per second.
+    let joint = "<joint name=\"left_wrist_yaw_joint\" type=\"revolute\">";
+    assert!(text.contains(joint));
+    let damped = text.replacen(joint, &format!("{joint}<dynamics damping=\"5\"/>"), 1);
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_simulate");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("g1_damped_wrist.urdf");
+    std::fs::write(&file, damped).unwrap();
+    let file = file.to_str().unwrap();
+    let args = [
+        "--urdf",
+        file,
+        "--floating",
+        "--feet",
+        "left_ankle_roll_link,right_ankle_roll_link",
+        "--duration",
+        "0.05",
+    ];
+    fails_with(
+        "g1_damped",
+        &args,
+        &[
+            "joint `left_wrist_yaw_joint` damping and friction",
+            "rk4 step below",
+        ],
+    );
+    let mut quiet = args.to_vec();
+    quiet.push("--no-joint-friction");
+    let (out, dir) = simulate("g1_damped_off", &quiet);
+    assert_eq!(
+        summary(&out, &dir)["passive"]["friction_laws"].as_u64(),
+        Some(0)
+    );
 }
