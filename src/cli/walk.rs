@@ -39,6 +39,10 @@ pub struct WalkArgs {
     /// and the ankle stabiliser (for comparison; the default walk falls).
     #[arg(long, requires = "dynamic")]
     open_loop: bool,
+    /// With --dynamic: give the plant its end stops at the joint ranges (the flat-footed
+    /// pattern takes the rear ankle beyond its range, so the stops change the walk).
+    #[arg(long, requires = "dynamic")]
+    end_stops: bool,
     /// Output directory.
     #[arg(long, default_value = "out/walk")]
     out: PathBuf,
@@ -118,6 +122,7 @@ fn dynamic_walk(
         step_length: args.step_length,
         step_time: args.step_time,
         method,
+        end_stops: args.end_stops,
         ..DynamicWalkParams::default()
     };
     let p = if args.open_loop {

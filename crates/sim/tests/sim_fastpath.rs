@@ -1,7 +1,7 @@
 //! The plant's right-hand side (one kinematics pass shared by contact, drives and dynamics,
 //! cached constant motor rows) equals the general route assembled here from public parts:
 //! contact forces from the foot chains, every motor row re-evaluated from its mechanism,
-//! `forward_dynamics` in one call. Lola Type 2 and Type 3, all drive modes, random states
+//! the end stops law by law, `forward_dynamics` in one call. Lola Type 2 and Type 3, all drive modes, random states
 //! with feet in and out of contact, unnormalised quaternions (as inside an RK4 step).
 
 mod common;
@@ -45,6 +45,9 @@ fn reference(p: &Plant, z: &[f64]) -> (Vec<f64>, Vec<Wrench>) {
         let t = k * (q[g.motor_q] / g.ratio - q[g.link_q]);
         tau[g.link_v] += t;
         tau[g.motor_v] -= t / g.ratio;
+    }
+    for stop in p.passive().stops() {
+        tau[stop.v] += stop.torque(q[stop.q], v[stop.v]);
     }
     let mut d = Data::new(m);
     let (qd, vd, td) = (

@@ -31,7 +31,8 @@
 //!   not enforce limits on task-determined joints; `min_joint_margin` reports it. In the
 //!   default walk the ankle flexion is beyond its -0.45 rad limit (the bent-knee posture
 //!   starts on it) in ~30-40 % of the samples, by up to 0.34 rad, and the upper-arm
-//!   abduction by up to 0.1 rad; [`dynamic`] tracks it as planned (the plant has no stops).
+//!   abduction by up to 0.1 rad; [`dynamic`] tracks it as planned (on a plant without end
+//!   stops unless asked).
 //! - The IK runs `settle_time` on the first sample before the walk.
 
 pub mod controller;

@@ -1,7 +1,8 @@
 //! Plants of the shipped robots: the Lola-like biped (Type 2 / Type 3) and URDF models with a
 //! floating base.
 //!
-//! Lola: one actuator per actuated joint (25). Harmonic Drive joints get a rigid gear (Type 2)
+//! Lola: one actuator per actuated joint (25), end stops at the joint ranges of its parameter
+//! file ([`crate::passive`]; its drives carry the gear friction, so no joint friction). Harmonic Drive joints get a rigid gear (Type 2)
 //! or their elastic motor coordinate (Type 3); the knee gets its screw rotor; the two ankle
 //! joints get the two ankle screw rotors (rotor `k` of a multi-input mechanism drives input
 //! `k`); the kinematic vergence joint is a direct torque source. Feet: the bodies `l_foot` /
@@ -65,7 +66,20 @@ pub fn lola_plant(variant: LolaType, config: PlantConfig) -> Result<LolaPlant, S
         .iter()
         .map(|(name, foot, sole)| lola_foot(m, name, foot, sole))
         .collect::<Result<Vec<_>, _>>()?;
+    let stops: Vec<JointSpec> = lola
+        .limits
+        .iter()
+        .map(|l| JointSpec {
+            name: l.name.clone(),
+            q: l.q_index,
+            v: l.v_index,
+            range: Some([l.lower, l.upper]),
+            damping: 0.0,
+            friction: 0.0,
+        })
+        .collect();
     let plant = Plant::new(m.clone(), actuators, &feet, lola.gears.clone(), config)?;
+    let plant = plant.with_passive(&stops)?;
     Ok(LolaPlant { plant, lola })
 }
 
@@ -200,6 +214,9 @@ pub const URDF_GEAR_RATIO: f64 = 100.0;
 /// through a rigid gear of [`URDF_GEAR_RATIO`]; `feet` name the sole links; `armature` gives
 /// the reflected rotor inertia `N^2 J` of the joints it names, added as geared rotor bodies
 /// (thesis 3.1, see [`Armature`]; URDF has no rotor data, so without it the drives carry none).
+/// The URDF's joint ranges, `<dynamics>` damping and friction become the plant's passive layer
+/// ([`Plant::with_passive`], switched by `config.passive`) and each `effort` the actuator's
+/// torque limit (and its motor's current limit `effort / (N k_t)`).
 ///
 /// The motor-side friction reflected through the gear (`N^2 tau_c / omega_eps` at rest:
 /// 50 N m s/rad with the defaults) would act on light links (a G1 ankle-roll subtree has

@@ -22,8 +22,10 @@
 //!   ([`stabiliser`]); each of the two alone is not enough for the default walk, and without
 //!   the RNEA feedforward the PD alone falls too.
 //! - The rear ankle of the flat-footed pattern goes beyond its limit at the end of double
-//!   support (see [`crate::walk`]); the plant has no joint stops, so by default the reference
-//!   is tracked as planned. `clamp_margin = Some(m)` clamps the reference into the limits
+//!   support (see [`crate::walk`]; the summary's `limit_excess` says by how much). By default
+//!   the reference is tracked as planned on a plant without end stops; `end_stops = true`
+//!   gives the plant its stops at the joint ranges ([`biped_sim::passive`]), which hold the
+//!   ankle where the pattern needs it beyond. `clamp_margin = Some(m)` clamps the reference into the limits
 //!   (shrunk by `m`) instead and the summary reports how many samples and by how much; with
 //!   `m = 0` the default walk falls in its second step (the clamped rear leg pushes the body
 //!   without toe-off, which neither the pattern nor the sole contact model has). Making the
@@ -74,6 +76,9 @@ pub struct DynamicWalkParams {
     pub stabiliser: Option<StabiliserGains>,
     /// Clamp the reference into the joint limits shrunk by this margin \[rad] (`None`: no).
     pub clamp_margin: Option<f64>,
+    /// Give the plant its end stops at the joint ranges (off by default: the flat-footed
+    /// reference goes beyond the ankle range, see the module docs).
+    pub end_stops: bool,
     /// Multibody ZMP correction iterations of the pattern (see [`mod@reference`]).
     pub zmp_iterations: usize,
     /// Standing time simulated after the walk \[s].
@@ -100,6 +105,7 @@ impl Default for DynamicWalkParams {
             feedforward: true,
             stabiliser: Some(StabiliserGains::default()),
             clamp_margin: None,
+            end_stops: false,
             zmp_iterations: 2,
             hold_time: 1.0,
             fall_drop: 0.25,

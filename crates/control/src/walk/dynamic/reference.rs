@@ -52,6 +52,9 @@ pub struct JointReference {
     pub clamped_samples: usize,
     /// Largest amount by which a reference angle was clamped \[rad].
     pub max_clamp: f64,
+    /// Largest amount by which a reference angle lies beyond its joint range before any
+    /// clamping (what the plant's end stops resist) \[rad].
+    pub max_excess: f64,
 }
 
 impl JointReference {
@@ -201,6 +204,7 @@ fn empty_reference(
         zmp_error: Vec::new(),
         clamped_samples: 0,
         max_clamp: 0.0,
+        max_excess: 0.0,
     })
 }
 
@@ -215,6 +219,8 @@ impl JointReference {
     ) {
         let mut clamped = false;
         for l in &lola.limits {
+            let excess = (q[l.q_index] - l.upper).max(l.lower - q[l.q_index]);
+            self.max_excess = self.max_excess.max(excess);
             let (qc, c) = clamp_angle(q[l.q_index], l, clamp);
             clamped |= c > 0.0;
             self.max_clamp = self.max_clamp.max(c);

@@ -28,7 +28,9 @@ pub struct DynamicWalkRun {
 /// `p.hold_time` is over or the robot falls.
 pub fn run_dynamic_walk(p: &DynamicWalkParams) -> Result<DynamicWalkRun, WalkError> {
     p.validate()?;
-    let lp = lola_plant(LolaType::Type2, PlantConfig::default()).map_err(model_err)?;
+    let mut config = PlantConfig::default();
+    config.passive.end_stops = p.end_stops;
+    let lp = lola_plant(LolaType::Type2, config).map_err(model_err)?;
     let (mut plant, lola) = (lp.plant, lp.lola);
     let pattern = WalkingPattern::generate(&walk_pattern_params(
         &lola,

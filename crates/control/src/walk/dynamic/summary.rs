@@ -72,6 +72,9 @@ pub struct DynamicWalkSummary {
     pub clamped_samples: usize,
     /// Largest clamp of a reference angle \[rad].
     pub max_clamp: f64,
+    /// Largest excess of a reference angle beyond its joint range \[rad] (the end stops hold
+    /// the joint at the range, so the tracking error includes it).
+    pub limit_excess: f64,
 }
 
 impl DynamicWalkSummary {
@@ -124,6 +127,7 @@ impl DynamicWalkSummary {
             rhs_evaluations,
             clamped_samples: r.clamped_samples,
             max_clamp: r.max_clamp,
+            limit_excess: r.max_excess,
         }
     }
 }
