@@ -254,7 +254,8 @@ impl Actuator {
         gen: &mut [f64],
     ) -> DriveState {
         let cmd = match mode {
-            DriveMode::Torque => cmd.clamp(-self.effort, self.effort),
+            // max/min, not `clamp`: no assertion on the bounds (checked in `Plant::new`).
+            DriveMode::Torque => cmd.max(-self.effort).min(self.effort),
             _ => cmd,
         };
         let Some(row) = row else {

@@ -188,7 +188,11 @@ impl PassiveJoints {
     #[inline]
     pub fn apply(&self, q: &[f64], v: &[f64], tau: &mut [f64]) {
         for s in &self.stops {
-            tau[s.v] += s.torque(q[s.q], v[s.v]);
+            let x = q[s.q];
+            // Inside the range (the common case) nothing else is read.
+            if x > s.upper || x < s.lower {
+                tau[s.v] += s.torque(x, v[s.v]);
+            }
         }
         for f in &self.friction {
             tau[f.v] += f.torque(v[f.v]);
