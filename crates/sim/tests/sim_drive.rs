@@ -4,34 +4,16 @@
 
 mod common;
 
-use biped_dynamics::{BodySpec, JointModel, Model, ModelBuilder};
+use biped_dynamics::JointModel;
 use biped_sim::controller::{Cascade, CurrentPi, JointPd};
 use biped_sim::drive::{Actuator, DriveMode, FrictionParams, MotorParams, Transmission};
 use biped_sim::ode::{Method, OdeSystem, Settings};
 use biped_sim::plant::{Plant, PlantConfig};
 use biped_sim::simulation::Simulation;
-use nalgebra::{DVector, Isometry3};
+use nalgebra::DVector;
 
 const N: f64 = 10.0;
-/// Axial inertia of the 1 kg, 0.2 m cube: `m (a^2 + b^2) / 12`.
-const I_ZZ: f64 = 1.0 * (0.04 + 0.04) / 12.0;
-
-fn spinner() -> Model {
-    let mut b = ModelBuilder::new();
-    let inertia = common::box_inertia(1.0, [0.2, 0.2, 0.2]);
-    b.add_body(BodySpec {
-        name: "rotor".into(),
-        joint_name: "spin".into(),
-        parent: None,
-        joint: JointModel::Revolute {
-            axis: nalgebra::Vector3::z_axis(),
-        },
-        placement: Isometry3::identity(),
-        inertia,
-    })
-    .unwrap();
-    b.build().unwrap()
-}
+use common::{spinner, SPINNER_I_ZZ as I_ZZ};
 
 fn plant(mode: DriveMode, friction: FrictionParams) -> Plant {
     let a = Actuator {

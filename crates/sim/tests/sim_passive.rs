@@ -5,7 +5,6 @@
 
 mod common;
 
-use biped_dynamics::{BodySpec, JointModel, Model, ModelBuilder};
 use biped_sim::controller::{Commands, Controller};
 use biped_sim::drive::{Actuator, DriveMode, FrictionParams, MotorParams, Transmission};
 use biped_sim::ode::Method;
@@ -14,27 +13,10 @@ use biped_sim::plant::{Plant, PlantConfig};
 use biped_sim::sensors::Sensors;
 use biped_sim::simulation::Simulation;
 use biped_sim::SimError;
-use nalgebra::{DVector, Isometry3};
+use nalgebra::DVector;
 use proptest::prelude::*;
 
-/// Axial inertia of the 1 kg, 0.2 m cube: `m (a^2 + b^2) / 12`.
-const I_ZZ: f64 = 1.0 * (0.04 + 0.04) / 12.0;
-
-fn spinner() -> Model {
-    let mut b = ModelBuilder::new();
-    b.add_body(BodySpec {
-        name: "rotor".into(),
-        joint_name: "spin".into(),
-        parent: None,
-        joint: JointModel::Revolute {
-            axis: nalgebra::Vector3::z_axis(),
-        },
-        placement: Isometry3::identity(),
-        inertia: common::box_inertia(1.0, [0.2, 0.2, 0.2]),
-    })
-    .unwrap();
-    b.build().unwrap()
-}
+use common::{spinner, SPINNER_I_ZZ as I_ZZ};
 
 fn spec(range: Option<[f64; 2]>, damping: f64, friction: f64) -> JointSpec {
     JointSpec {

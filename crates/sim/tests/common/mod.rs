@@ -14,6 +14,26 @@ pub fn box_inertia(m: f64, s: [f64; 3]) -> RigidInertia {
     RigidInertia::new(m, Vector3::zeros(), Matrix3::from_diagonal(&d)).unwrap()
 }
 
+/// Axial inertia of the spinner's 1 kg, 0.2 m cube: `m (a^2 + b^2) / 12`.
+pub const SPINNER_I_ZZ: f64 = 1.0 * (0.04 + 0.04) / 12.0;
+
+/// One revolute joint `spin` (axis z, no gravity torque) carrying a 1 kg, 0.2 m cube `rotor`.
+pub fn spinner() -> Model {
+    let mut b = ModelBuilder::new();
+    b.add_body(BodySpec {
+        name: "rotor".into(),
+        joint_name: "spin".into(),
+        parent: None,
+        joint: JointModel::Revolute {
+            axis: Vector3::z_axis(),
+        },
+        placement: Isometry3::identity(),
+        inertia: box_inertia(1.0, [0.2, 0.2, 0.2]),
+    })
+    .unwrap();
+    b.build().unwrap()
+}
+
 /// One free box body named "box".
 pub fn free_box(m: f64, s: [f64; 3]) -> Model {
     let mut b = ModelBuilder::new();
