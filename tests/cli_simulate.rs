@@ -545,6 +545,13 @@ fn urdf_limits_and_joint_damping() {
             "rk4 step below",
         ],
     );
+    let mut outside = args.to_vec();
+    outside.extend(["--no-joint-friction", "--pose", "left_knee_joint=-0.5"]);
+    fails_with(
+        "g1_outside",
+        &outside,
+        &["pose `left_knee_joint`", "outside the joint range"],
+    );
     let mut quiet = args.to_vec();
     quiet.push("--no-joint-friction");
     let (out, dir) = simulate("g1_damped_off", &quiet);

@@ -48,7 +48,7 @@ fn joint_body(plant: &Plant, joint: &str) -> Result<BodyId, SimError> {
 }
 
 /// Neutral configuration with the named one-DoF joint angles set and Type 3 motors at
-/// `N q_link` (unloaded gears).
+/// `N q_link` (unloaded gears); every joint with end stops must start inside its range.
 pub(super) fn configuration(
     plant: &Plant,
     pose: &[(String, f64)],
@@ -68,7 +68,29 @@ pub(super) fn configuration(
     for g in plant.gears() {
         q[g.motor_q] = g.ratio * q[g.link_q];
     }
+    within_stops(plant, &q)?;
     Ok(q)
+}
+
+/// Rejects a start pose with a joint beyond its end stops (the stop would fight the PD that
+/// holds the pose for the whole run).
+fn within_stops(plant: &Plant, q: &DVector<f64>) -> Result<(), SimError> {
+    match plant
+        .passive()
+        .stops()
+        .iter()
+        .find(|s| !(s.lower..=s.upper).contains(&q[s.q]))
+    {
+        Some(s) => Err(SimError::InvalidParameter {
+            what: format!("pose `{}`", s.name),
+            reason: format!(
+                "starts at {} outside the joint range [{}, {}]: set it inside with the pose, \
+                 or leave the end stops out",
+                q[s.q], s.lower, s.upper
+            ),
+        }),
+        None => Ok(()),
+    }
 }
 
 /// Penetration of every contact point when the weight is shared equally by all points.
