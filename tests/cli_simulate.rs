@@ -412,77 +412,12 @@ fn bad_inputs_fail_with_one_line() {
             &["--urdf", g1, "--floating", "--feet", "one_link"],
             &["--feet", "LEFT,RIGHT"],
         ),
-        (
-            &[
-                "--urdf",
-                g1,
-                "--floating",
-                "--feet",
-                feet,
-                "--scenario",
-                "sway",
-            ],
-            &["--sway-joints"],
-        ),
-        (
-            &[
-                "--urdf",
-                g1,
-                "--floating",
-                "--feet",
-                feet,
-                "--sole-size",
-                "0.1",
-            ],
-            &["--sole-size"],
-        ),
         (&["--urdf", g1, "--lola", "type2"], &["--lola", "--urdf"]),
         (&["--every", "0"], &["--every", "whole number"]),
         (&["--every", "1.5"], &["--every"]),
         (&["--contact", "-1,0"], &["--contact", "stiffness"]),
         (&["--contact", "1e5"], &["--contact", "2 comma-separated"]),
         (&["--bandwidth", "0"], &["--bandwidth", "> 0"]),
-        (
-            &[
-                "--urdf",
-                g1,
-                "--floating",
-                "--feet",
-                feet,
-                "--armature",
-                "*_knee",
-            ],
-            &["--armature", "JOINT=KG_M2"],
-        ),
-        (
-            &[
-                "--urdf",
-                g1,
-                "--floating",
-                "--feet",
-                feet,
-                "--armature",
-                "*_knee_jiont=0.02",
-            ],
-            &[
-                "--armature",
-                "*_knee_jiont",
-                "matches no revolute joint",
-                "g1_29dof",
-            ],
-        ),
-        (
-            &[
-                "--urdf",
-                g1,
-                "--floating",
-                "--feet",
-                feet,
-                "--armature",
-                "*_knee_joint=-0.02",
-            ],
-            &["--armature", "*_knee_joint", ">= 0"],
-        ),
         (
             &["--armature", "*=0.01"],
             &["--armature", "only applies with --urdf"],
@@ -499,6 +434,30 @@ fn bad_inputs_fail_with_one_line() {
     ];
     for (args, expected) in cases {
         fails_with("bad", args, expected);
+    }
+    // The same, after `--urdf G1 --floating --feet LEFT,RIGHT`.
+    let on_g1: &[(&[&str], &[&str])] = &[
+        (&["--scenario", "sway"], &["--sway-joints"]),
+        (&["--sole-size", "0.1"], &["--sole-size"]),
+        (&["--armature", "*_knee"], &["--armature", "JOINT=KG_M2"]),
+        (
+            &["--armature", "*_knee_jiont=0.02"],
+            &[
+                "--armature",
+                "*_knee_jiont",
+                "matches no revolute joint",
+                "g1_29dof",
+            ],
+        ),
+        (
+            &["--armature", "*_knee_joint=-0.02"],
+            &["--armature", "*_knee_joint", ">= 0"],
+        ),
+    ];
+    for (extra, expected) in on_g1 {
+        let mut args = vec!["--urdf", g1, "--floating", "--feet", feet];
+        args.extend_from_slice(extra);
+        fails_with("bad", &args, expected);
     }
 }
 

@@ -2,8 +2,8 @@
 //! floating base.
 //!
 //! Lola: one actuator per actuated joint (25), end stops at the joint ranges of its parameter
-//! file ([`crate::passive`]; its drives carry the gear friction, so no joint friction). Harmonic Drive joints get a rigid gear (Type 2)
-//! or their elastic motor coordinate (Type 3); the knee gets its screw rotor; the two ankle
+//! file ([`crate::passive`]; its drives carry the gear friction, so no joint friction).
+//! Harmonic Drive joints get a rigid gear (Type 2) or their elastic motor coordinate (Type 3); the knee gets its screw rotor; the two ankle
 //! joints get the two ankle screw rotors (rotor `k` of a multi-input mechanism drives input
 //! `k`); the kinematic vergence joint is a direct torque source. Feet: the bodies `l_foot` /
 //! `r_foot` with 8 sole points on the rectangle of the foot box, at the height of the sole
