@@ -428,6 +428,22 @@ fn bad_inputs_fail_with_one_line() {
             &["--no-end-stops", "only applies with --urdf"],
         ),
         (
+            &["--scenario", "sway", "--sway", "0.6,2"],
+            &["sway amplitude", "l_hip_adduction", "outside its range"],
+        ),
+        (
+            &["--scenario", "sway", "--sway", "0.1"],
+            &["--sway", "2 comma"],
+        ),
+        (
+            &["--scenario", "sway", "--sway", "0.1,0"],
+            &["--sway", "period"],
+        ),
+        (
+            &["--sway", "0.1,2"],
+            &["--sway", "only applies with --scenario sway"],
+        ),
+        (
             &["--no-joint-friction"],
             &["--no-joint-friction", "only applies with --urdf"],
         ),

@@ -54,6 +54,9 @@ pub struct SimulateArgs {
     /// Hip and ankle adduction joints for `sway` on a URDF robot.
     #[arg(long, value_name = "HIP_L,HIP_R,ANKLE_L,ANKLE_R")]
     sway_joints: Option<String>,
+    /// Sway amplitude of the leg lean in rad and sway period in s (default 0.06,2).
+    #[arg(long, value_name = "RAD,S", allow_hyphen_values = true)]
+    sway: Option<String>,
     /// Reflected rotor inertia `N^2 J` [kg m^2] of URDF joints, added as geared rotor bodies,
     /// e.g. `*_knee_joint=0.025,*_ankle_*=0.0072` (`*` matches any run; first match wins).
     #[arg(long, value_name = "JOINT=KG_M2,...", allow_hyphen_values = true)]

@@ -153,3 +153,43 @@ fn stand_type2_in_voltage_mode_with_a_cascaded_current_loop() {
         "motors carry current"
     );
 }
+
+/// A sway amplitude that takes a sway joint past its end stop at either extreme is rejected
+/// naming that joint; one just inside the smallest margin of the four joints' ranges (read
+/// from the plant's stops about the stand pose) builds.
+#[test]
+fn sway_amplitude_beyond_a_joint_range_is_an_error() {
+    let mut lp = lola_plant(LolaType::Type2, PlantConfig::default()).unwrap();
+    let opts = ScenarioOptions::lola();
+    let q0 = build(ScenarioKind::Stand, &mut lp.plant, &opts).unwrap().q0;
+    let joints = opts.sway_joints.clone().unwrap();
+    let names = joints.hips.iter().chain(&joints.ankles);
+    let stops = lp.plant.passive().stops();
+    let (margin, tightest) = names
+        .map(|n| {
+            let s = stops.iter().find(|s| &s.name == n).unwrap();
+            ((s.upper - q0[s.q]).min(q0[s.q] - s.lower), n.clone())
+        })
+        .fold((f64::INFINITY, String::new()), |a, b| {
+            if b.0 < a.0 {
+                b
+            } else {
+                a
+            }
+        });
+    assert!(margin > 0.0 && margin < 1.0, "margin {margin}");
+    let with = |a: f64| ScenarioOptions {
+        sway_amplitude: a,
+        ..opts.clone()
+    };
+    assert!(build(ScenarioKind::Sway, &mut lp.plant, &with(0.999 * margin)).is_ok());
+    let e = build(ScenarioKind::Sway, &mut lp.plant, &with(1.001 * margin)).unwrap_err();
+    let msg = e.to_string();
+    assert!(
+        msg.contains("sway amplitude") && msg.contains(&tightest),
+        "{msg}"
+    );
+    for bad in [0.0, -0.1, f64::NAN] {
+        assert!(build(ScenarioKind::Sway, &mut lp.plant, &with(bad)).is_err());
+    }
+}

@@ -105,6 +105,9 @@ impl Job {
         if let Some(text) = &a.bandwidth {
             options.bandwidth = positive("--bandwidth", text)?;
         }
+        if let Some(text) = &a.sway {
+            [options.sway_amplitude, options.sway_period] = sway_motion(text, kind)?;
+        }
         let (settings, step) = integrator_settings(a, method, default_step)?;
         let every = count("--every", &a.every)?;
         let scenario = build(kind, &mut plant, &options).map_err(|e| match e {
@@ -171,6 +174,19 @@ fn merge_pose(pose: &mut Vec<(String, f64)>, given: Vec<(String, f64)>) {
             Some(entry) => entry.1 = angle,
             None => pose.push((name, angle)),
         }
+    }
+}
+
+/// `--sway AMPLITUDE,PERIOD`: both finite and > 0, and only with `--scenario sway`.
+fn sway_motion(text: &str, kind: ScenarioKind) -> Result<[f64; 2], String> {
+    if kind != ScenarioKind::Sway {
+        return Err("--sway: only applies with --scenario sway".into());
+    }
+    match numbers(text, 2, "--sway")?[..] {
+        [a, t] if a > 0.0 && t > 0.0 => Ok([a, t]),
+        _ => Err(format!(
+            "--sway: need amplitude > 0 rad and period > 0 s, got \"{text}\""
+        )),
     }
 }
 

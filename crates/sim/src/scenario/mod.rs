@@ -140,6 +140,8 @@ pub fn build(
                     what: "sway_joints".into(),
                     reason: "the sway scenario needs hip and ankle adduction joint names".into(),
                 })?;
+            crate::error::positive("sway_amplitude", o.sway_amplitude, false)?;
+            pose::sway_within_stops(plant, &q0, joints, o.sway_amplitude)?;
             let traj = sway_trajectory(
                 plant,
                 joints,

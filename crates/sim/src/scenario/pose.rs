@@ -1,6 +1,7 @@
 //! Initial poses: named joint angles, placing the robot on (or above) the ground.
 
 use crate::error::SimError;
+use crate::passive::EndStop;
 use crate::plant::Plant;
 use biped_dynamics::{update_placements, BodyId};
 use nalgebra::DVector;
@@ -75,12 +76,7 @@ pub(super) fn configuration(
 /// Rejects a start pose with a joint beyond its end stops (the stop would fight the PD that
 /// holds the pose for the whole run).
 fn within_stops(plant: &Plant, q: &DVector<f64>) -> Result<(), SimError> {
-    match plant
-        .passive()
-        .stops()
-        .iter()
-        .find(|s| !(s.lower..=s.upper).contains(&q[s.q]))
-    {
+    match outside_stops(plant, q) {
         Some(s) => Err(SimError::InvalidParameter {
             what: format!("pose `{}`", s.name),
             reason: format!(
@@ -91,6 +87,42 @@ fn within_stops(plant: &Plant, q: &DVector<f64>) -> Result<(), SimError> {
         }),
         None => Ok(()),
     }
+}
+
+/// The first joint with end stops whose coordinate in `q` lies outside its range.
+fn outside_stops<'p>(plant: &'p Plant, q: &DVector<f64>) -> Option<&'p EndStop> {
+    let inside = |s: &EndStop| (s.lower..=s.upper).contains(&q[s.q]);
+    plant.passive().stops().iter().find(|s| !inside(s))
+}
+
+/// Rejects a sway amplitude that takes a sway joint beyond its end stops at either extreme
+/// of the motion (`+-amplitude` on the hips, `-+amplitude` on the ankles about `q0`): the PD
+/// would track a target the stop pushes back from.
+pub(super) fn sway_within_stops(
+    plant: &Plant,
+    q0: &DVector<f64>,
+    joints: &SwayJoints,
+    amplitude: f64,
+) -> Result<(), SimError> {
+    let index = |name: &str| joint_body(plant, name).map(|b| plant.model().bodies()[b].q_index());
+    let hips = [index(&joints.hips[0])?, index(&joints.hips[1])?];
+    let ankles = [index(&joints.ankles[0])?, index(&joints.ankles[1])?];
+    for sign in [1.0, -1.0] {
+        let mut q = q0.clone();
+        hips.iter().for_each(|&i| q[i] += sign * amplitude);
+        ankles.iter().for_each(|&i| q[i] -= sign * amplitude);
+        if let Some(s) = outside_stops(plant, &q) {
+            return Err(SimError::InvalidParameter {
+                what: "sway amplitude".into(),
+                reason: format!(
+                    "{amplitude} rad takes `{}` to {} outside its range [{}, {}]: \
+                     lower the amplitude or start from another pose",
+                    s.name, q[s.q], s.lower, s.upper
+                ),
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Penetration of every contact point when the weight is shared equally by all points.
