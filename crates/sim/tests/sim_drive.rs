@@ -25,6 +25,7 @@ fn plant(mode: DriveMode, friction: FrictionParams) -> Plant {
         friction,
         nominal_ratio: N,
         effort: f64::INFINITY,
+        velocity: f64::INFINITY,
     };
     let config = PlantConfig {
         mode,

@@ -1,6 +1,7 @@
-//! The passive joint layer (end stops, joint friction) and effort limits on a single joint
-//! (axis z, no gravity torque) whose inertia is the cube formula, against closed-form results:
-//! static stop penetration `tau / k`, exponential viscous decay, Coulomb deceleration `f / I`;
+//! The passive joint layer (end stops, joint friction), effort and speed limits on a single
+//! joint (axis z, no gravity torque) whose inertia is the cube formula, against closed-form
+//! results: static stop penetration `tau / k`, exponential viscous decay, Coulomb deceleration
+//! `f / I`, the exponential approach to the speed limit on the torque-speed line;
 //! the laws' signs and slopes; the stability-interval check of the simulation.
 
 mod common;
@@ -31,7 +32,21 @@ fn spec(range: Option<[f64; 2]>, damping: f64, friction: f64) -> JointSpec {
 
 /// The spinner as a torque-mode plant with effort limit `effort` and the passive `spec`.
 fn plant(spec: JointSpec, effort: f64) -> Plant {
-    let a = Actuator {
+    limited(spec, effort, f64::INFINITY)
+}
+
+/// [`plant`] with the joint speed limit `velocity` as well.
+fn limited(spec: JointSpec, effort: f64, velocity: f64) -> Plant {
+    let a = spin_actuator(effort, velocity);
+    Plant::new(spinner(), vec![a], &[], vec![], PlantConfig::default())
+        .unwrap()
+        .with_passive(&[spec])
+        .unwrap()
+}
+
+/// A direct torque drive of the spinner with the given limits.
+fn spin_actuator(effort: f64, velocity: f64) -> Actuator {
+    Actuator {
         name: "spin".into(),
         joint_q: 0,
         joint_v: 0,
@@ -40,11 +55,8 @@ fn plant(spec: JointSpec, effort: f64) -> Plant {
         friction: FrictionParams::none(),
         nominal_ratio: 1.0,
         effort,
-    };
-    Plant::new(spinner(), vec![a], &[], vec![], PlantConfig::default())
-        .unwrap()
-        .with_passive(&[spec])
-        .unwrap()
+        velocity,
+    }
 }
 
 /// State after `t` s of held torque `tau` from `(q0, v0)`, RK4 at 0.1 ms.
@@ -103,6 +115,59 @@ fn the_effort_limit_caps_the_pressing_torque() {
         "{}",
         z[0]
     );
+}
+
+/// The torque-speed line `tau = e (1 - w / w_max)`, sampled per control cycle of length `h`
+/// ([`Plant::hold_commands`]): a saturated command holds `e (1 - w_k / w_max)` over cycle `k`,
+/// which RK4 integrates exactly (constant torque, no other force), so
+/// `w_k - w_max = (w_0 - w_max) (1 - h e / (I w_max))^k`: from rest up to the limit (to
+/// `-w_max` for the opposite command), and from above the limit down to it for a zero command
+/// (braking only).
+#[test]
+fn the_speed_limit_follows_the_sampled_torque_speed_line() {
+    let (effort, w_max, h, n) = (0.05, 2.0, 1e-3, 300);
+    let mut p = limited(spec(None, 0.0, 0.0), effort, w_max);
+    let factor = 1.0 - h * effort / (I_ZZ * w_max);
+    assert!(factor > 0.0 && factor < 1.0);
+    for (tau, w0, limit) in [(10.0, 0.0, w_max), (-10.0, 0.0, -w_max), (0.0, 3.0, w_max)] {
+        let cmds = Commands {
+            mode: DriveMode::Torque,
+            values: vec![tau],
+        };
+        let mut z = p
+            .initial_state(&DVector::zeros(1), &DVector::from_element(1, w0))
+            .unwrap();
+        p.hold_commands(&cmds, &z).unwrap();
+        common::integrate(&mut p, Method::Rk4, h, &mut z, n, |_, z, p| {
+            p.hold_commands(&cmds, z).unwrap()
+        });
+        let w = limit + (w0 - limit) * factor.powi(n as i32);
+        assert!(
+            (z[1] - w).abs() < 1e-12,
+            "tau {tau}, w0 {w0}: {} vs {w}",
+            z[1]
+        );
+        assert!(
+            (w - w0).abs() > 0.2,
+            "the run must move the speed: {w0} -> {w}"
+        );
+    }
+    // Without sampling (set_commands), only the effort clamp acts: w = w0 + e t / I.
+    let mut z = p
+        .initial_state(&DVector::zeros(1), &DVector::zeros(1))
+        .unwrap();
+    let cmds = Commands {
+        mode: DriveMode::Torque,
+        values: vec![10.0],
+    };
+    p.set_commands(&cmds).unwrap();
+    common::integrate(&mut p, Method::Rk4, h, &mut z, n, |_, _, _| {});
+    let w = effort * h * n as f64 / I_ZZ;
+    assert!((z[1] - w).abs() < 1e-9 * w, "{} vs {w}", z[1]);
+    assert!(matches!(
+        p.hold_commands(&cmds, &z[..1]),
+        Err(SimError::Length { what: "z", .. })
+    ));
 }
 
 #[test]
@@ -236,9 +301,37 @@ fn bad_passive_inputs_are_errors() {
     };
     let none = PassiveJoints::new(&[spec(Some([-1.0, 1.0]), 1.0, 1.0)], |_| 0.0, &off).unwrap();
     assert!(none.is_empty() && none.fastest().is_none());
+    // Drive limits must be > 0 (infinite = none).
+    for (effort, velocity) in [
+        (0.0, 1.0),
+        (f64::NAN, 1.0),
+        (1.0, 0.0),
+        (1.0, -2.0),
+        (1.0, f64::NAN),
+    ] {
+        let a = spin_actuator(effort, velocity);
+        let r = Plant::new(spinner(), vec![a], &[], vec![], PlantConfig::default());
+        assert!(r.unwrap_err().to_string().contains("actuator `spin`"));
+    }
 }
 
 proptest! {
+    /// The torque envelope lies in `[-e, e]`, holds 0 up to the speed limit and excludes
+    /// driving torque beyond it, is `[-e, e]` at rest and odd in the speed.
+    #[test]
+    fn the_torque_envelope_is_bounded_and_odd(
+        e in 1e-3f64..1e3, w_max in 1e-2f64..1e2, x in -3.0f64..3.0,
+    ) {
+        let a = limited(spec(None, 0.0, 0.0), e, w_max).actuators()[0].clone();
+        let w = x * w_max;
+        let (lo, hi) = a.torque_envelope(w);
+        prop_assert!(-e <= lo && lo <= hi && hi <= e);
+        prop_assert_eq!(x.abs() <= 1.0, lo <= 0.0 && 0.0 <= hi);
+        prop_assert_eq!(a.torque_envelope(0.0), (-e, e));
+        let (mlo, mhi) = a.torque_envelope(-w);
+        prop_assert!((mlo + hi).abs() <= 1e-12 * e && (mhi + lo).abs() <= 1e-12 * e);
+    }
+
     /// The stop pushes back only: zero inside the range, towards the range outside, never
     /// pulling the joint into the stop, and continuous in `q` at the range ends at rest.
     #[test]

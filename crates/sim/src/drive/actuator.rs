@@ -108,6 +108,11 @@ pub struct Actuator {
     /// `[-effort, effort]` \[N m or N]; `f64::INFINITY` = none. (Current and voltage commands are
     /// limited by the motor's `max_current` instead.)
     pub effort: f64,
+    /// Joint speed limit `omega_max` (e.g. a URDF `velocity`) \[rad/s or m/s]: with a finite
+    /// `effort`, torque commands held by [`crate::plant::Plant::hold_commands`] are clamped to
+    /// the DC motor's torque-speed line at the sampled speed ([`Self::torque_envelope`]);
+    /// `f64::INFINITY` = none.
+    pub velocity: f64,
 }
 
 /// Motor-side quantities of one actuator at one instant.
@@ -126,6 +131,22 @@ pub struct DriveState {
 }
 
 impl Actuator {
+    /// Joint torque range `[lo, hi]` at joint speed `w`: `[-effort, effort]`, narrowed with a
+    /// finite speed limit to the DC motor's line `tau = effort (+-1 - w / omega_max)` (as Isaac
+    /// Lab's `DCMotor` with the saturation torque at the effort limit): no driving torque at
+    /// `omega_max`, braking only beyond it (the full effort beyond `2 omega_max`), the full effort
+    /// against the motion.
+    #[inline]
+    pub fn torque_envelope(&self, w: f64) -> (f64, f64) {
+        let e = self.effort;
+        if self.velocity.is_finite() && e.is_finite() {
+            let back = e * w / self.velocity;
+            ((-e - back).clamp(-e, e), (e - back).clamp(-e, e))
+        } else {
+            (-e, e)
+        }
+    }
+
     /// The rotor transmission of coupled body `body`, its inputs read from the model.
     pub fn rotor_transmission(model: &Model, body: BodyId) -> Result<Transmission, SimError> {
         let b = model.body(body).ok_or_else(|| SimError::Unknown {

@@ -109,6 +109,7 @@ fn actuator(
         friction: c.friction,
         nominal_ratio: 1.0,
         effort: f64::INFINITY,
+        velocity: f64::INFINITY,
     };
     let q0 = m.neutral();
     a.nominal_ratio = match (t, a.motor_row(m, q0.as_slice())?) {
@@ -262,6 +263,9 @@ pub fn urdf_plant(
             let props = u.joints.iter().find(|j| j.name == a.name);
             if let Some(effort) = props.and_then(|j| j.effort) {
                 limit_effort(&mut a, effort);
+            }
+            if let Some(velocity) = props.and_then(|j| j.velocity) {
+                a.velocity = velocity;
             }
             actuators.push(a);
         }

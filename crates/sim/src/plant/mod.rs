@@ -140,10 +140,14 @@ impl Plant {
                 || a.nominal_ratio <= 0.0
                 || a.effort.is_nan()
                 || a.effort <= 0.0
+                || a.velocity.is_nan()
+                || a.velocity <= 0.0
             {
                 return Err(SimError::InvalidParameter {
                     what: format!("actuator `{}`", a.name),
-                    reason: "joint index out of range, nominal ratio or effort limit <= 0".into(),
+                    reason:
+                        "joint index out of range, nominal ratio, effort or velocity limit <= 0"
+                            .into(),
                 });
             }
         }
@@ -272,6 +276,33 @@ impl Plant {
         }
         finite("commands", &c.values)?;
         self.commands.copy_from_slice(&c.values);
+        Ok(())
+    }
+
+    /// [`Self::set_commands`] at the control sample `z`, as a drive's firmware limits its
+    /// torque from the measured speed each cycle: torque commands are clamped to each
+    /// actuator's torque-speed envelope at its joint speed in `z`
+    /// ([`Actuator::torque_envelope`], a no-op without a speed limit). The simulation holds its
+    /// controller's commands this way; sampled per cycle, the line's slope `effort / omega_max`
+    /// adds no stiffness to the integrated plant (a light joint without rotor inertia would
+    /// need `h effort / (omega_max I) <= 2.785` for RK4 otherwise).
+    pub fn hold_commands(&mut self, c: &Commands, z: &[f64]) -> Result<(), SimError> {
+        self.set_commands(c)?;
+        if c.mode != DriveMode::Torque {
+            return Ok(());
+        }
+        if z.len() != self.layout.dim() {
+            return Err(SimError::Length {
+                what: "z",
+                got: z.len(),
+                expected: self.layout.dim(),
+            });
+        }
+        let v = &z[self.layout.v()];
+        for (a, cmd) in self.actuators.iter().zip(&mut self.commands) {
+            let (lo, hi) = a.torque_envelope(v[a.joint_v]);
+            *cmd = cmd.max(lo).min(hi);
+        }
         Ok(())
     }
 

@@ -252,7 +252,7 @@ impl<C: Controller> Simulation<C> {
         self.sample()?;
         self.controller
             .update(self.t, &self.sensors, &mut self.commands)?;
-        self.plant.set_commands(&self.commands)?;
+        self.plant.hold_commands(&self.commands, &self.z)?;
         self.observe(observer)
     }
 
