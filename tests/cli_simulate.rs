@@ -103,6 +103,9 @@ fn short_stand_writes_csv_plots_and_a_consistent_summary() {
     assert_eq!(s["scenario"], "stand");
     assert_eq!(s["method"], "rk4");
     assert!(s["passed"].is_boolean() && s["checks"].as_array().unwrap().len() == 3);
+    // Lola's drives have no effort or speed limits in torque mode: nothing is cut.
+    assert_eq!(s["drive_limits"]["cycles"].as_u64(), Some(0));
+    assert!(s["drive_limits"]["most"].is_null());
     // The CSV: one row per period plus the end, per-foot forces summing to the total.
     let table = csv(&dir);
     assert_eq!(table.0[0], "time");

@@ -204,19 +204,60 @@ fn coulomb_friction_decelerates_at_f_over_i_and_stops() {
     assert!(z[1].abs() < eps, "{} vs eps {eps}", z[1]);
 }
 
-/// A controller that holds zero torque on every actuator.
-struct Zero;
+/// A controller that holds a constant torque on every actuator (1 ms period).
+struct Hold(f64);
 
-impl Controller for Zero {
+/// Zero torque on every actuator.
+const ZERO: Hold = Hold(0.0);
+
+impl Controller for Hold {
     fn period(&self) -> f64 {
         1e-3
     }
     fn mode(&self) -> DriveMode {
         DriveMode::Torque
     }
-    fn update(&mut self, _: f64, _: &Sensors, _: &mut Commands) -> Result<(), SimError> {
+    fn update(&mut self, _: f64, _: &Sensors, c: &mut Commands) -> Result<(), SimError> {
+        c.values.fill(self.0);
         Ok(())
     }
+}
+
+/// The simulation holds commands through the drive limits and counts the cycles that cut
+/// them: a saturated command every cycle (the speed then follows the sampled torque-speed
+/// line of `the_speed_limit_follows_the_sampled_torque_speed_line`), none for zero torque
+/// from rest, and for a command below the effort only the cycles beyond the speed
+/// `w_max (1 - tau / e)` where the line falls below it.
+#[test]
+fn the_simulation_counts_commands_cut_by_the_drive_limits() {
+    let (effort, w_max, n) = (0.05, 2.0, 300u64);
+    let factor = 1.0 - 1e-3 * effort / (I_ZZ * w_max);
+    let mut run = |tau: f64| {
+        let p = limited(spec(None, 0.0, 0.0), effort, w_max);
+        let z0 = p
+            .initial_state(&DVector::zeros(1), &DVector::zeros(1))
+            .unwrap();
+        let mut sim = Simulation::new(p, Hold(tau), Method::Rk4, z0).unwrap();
+        let s = sim.run(n as f64 * 1e-3, &mut |_| Ok(())).unwrap();
+        (s.drive_limits, sim.state()[1])
+    };
+    let (cut, w) = run(10.0);
+    assert_eq!(cut.cycles, n);
+    let most = cut.most.unwrap();
+    assert_eq!((most.joint.as_str(), most.cycles), ("spin", n));
+    let exact = w_max * (1.0 - factor.powi(n as i32));
+    assert!((w - exact).abs() < 1e-12, "{w} vs {exact}");
+    let (cut, _) = run(0.0);
+    assert_eq!((cut.cycles, cut.most), (0, None));
+    // Cut from the first cycle whose sampled speed exceeds w_max (1 - tau / e) = 0.4 on.
+    let tau = 0.04;
+    let (cut, w) = run(tau);
+    let free = (0..n).map(|k| tau * 1e-3 * k as f64 / I_ZZ);
+    let uncut = free
+        .take_while(|w| *w <= w_max * (1.0 - tau / effort))
+        .count() as u64;
+    assert!(uncut > 0 && uncut < n && w < w_max, "{uncut}, {w}");
+    assert_eq!(cut.cycles, n - uncut);
 }
 
 #[test]
@@ -230,7 +271,7 @@ fn a_step_beyond_the_stability_interval_is_an_error_naming_the_joint() {
             let z0 = p
                 .initial_state(&DVector::zeros(1), &DVector::zeros(1))
                 .unwrap();
-            match Simulation::new(p, Zero, method, z0) {
+            match Simulation::new(p, ZERO, method, z0) {
                 Ok(_) => assert!(ok, "{method} at {factor} x the bound must be rejected"),
                 Err(e) => {
                     assert!(!ok, "{method} at {factor}: {e}");
@@ -247,7 +288,7 @@ fn a_step_beyond_the_stability_interval_is_an_error_naming_the_joint() {
     let z0 = p
         .initial_state(&DVector::zeros(1), &DVector::zeros(1))
         .unwrap();
-    assert!(Simulation::new(p, Zero, Method::Dopri5, z0).is_ok());
+    assert!(Simulation::new(p, ZERO, Method::Dopri5, z0).is_ok());
 }
 
 /// `y' = -y` with step `x`: growth factor of one step of `method`'s stability polynomial,

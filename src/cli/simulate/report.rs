@@ -85,6 +85,12 @@ pub fn print_report(
             p.end_stops, p.friction_laws, f.law, f.joint, f.rate
         );
     }
+    if let Some(m) = &s.drive_limits.most {
+        println!(
+            "  drive limits cut commands in {} of {} control cycles (most often `{}`: {})",
+            s.drive_limits.cycles, s.control_cycles, m.joint, m.cycles
+        );
+    }
     for c in &s.checks {
         let verdict = if c.passed { "ok" } else { "FAILED" };
         println!(

@@ -147,6 +147,22 @@ impl Actuator {
         }
     }
 
+    /// Command `cmd` of kind `mode` within the drive's limits at joint speed `w`: torque
+    /// commands in [`Self::torque_envelope`], a motor-driven joint's (`driven`: it has a motor
+    /// row) current and voltage commands within the motor's `max_current` and `max_voltage`.
+    #[inline]
+    pub fn limit(&self, mode: DriveMode, cmd: f64, w: f64, driven: bool) -> f64 {
+        let m = &self.motor;
+        // max/min, not `clamp`: no assertion on the bounds (checked in `Plant::new`).
+        let (lo, hi) = match mode {
+            DriveMode::Torque => self.torque_envelope(w),
+            DriveMode::Current if driven => (-m.max_current, m.max_current),
+            DriveMode::Voltage if driven => (-m.max_voltage, m.max_voltage),
+            _ => return cmd,
+        };
+        cmd.max(lo).min(hi)
+    }
+
     /// The rotor transmission of coupled body `body`, its inputs read from the model.
     pub fn rotor_transmission(model: &Model, body: BodyId) -> Result<Transmission, SimError> {
         let b = model.body(body).ok_or_else(|| SimError::Unknown {
@@ -274,11 +290,7 @@ impl Actuator {
         v: &[f64],
         gen: &mut [f64],
     ) -> DriveState {
-        let cmd = match mode {
-            // max/min, not `clamp`: no assertion on the bounds (checked in `Plant::new`).
-            DriveMode::Torque => cmd.max(-self.effort).min(self.effort),
-            _ => cmd,
-        };
+        let cmd = self.limit(mode, cmd, 0.0, row.is_some());
         let Some(row) = row else {
             gen[self.joint_v] += cmd;
             return DriveState {
@@ -297,14 +309,8 @@ impl Actuator {
                 let tau = cmd / self.nominal_ratio;
                 (tau, tau / m.torque_constant, 0.0)
             }
-            DriveMode::Current => {
-                let i = cmd.clamp(-m.max_current, m.max_current);
-                (m.torque(i), i, 0.0)
-            }
-            DriveMode::Voltage => {
-                let u = cmd.clamp(-m.max_voltage, m.max_voltage);
-                (m.torque(i), i, m.current_rate(u, i, speed))
-            }
+            DriveMode::Current => (m.torque(cmd), cmd, 0.0),
+            DriveMode::Voltage => (m.torque(i), i, m.current_rate(cmd, i, speed)),
         };
         let friction = self.friction.torque(speed, torque);
         let drive = if mode == DriveMode::Torque {

@@ -280,17 +280,14 @@ impl Plant {
     }
 
     /// [`Self::set_commands`] at the control sample `z`, as a drive's firmware limits its
-    /// torque from the measured speed each cycle: torque commands are clamped to each
-    /// actuator's torque-speed envelope at its joint speed in `z`
-    /// ([`Actuator::torque_envelope`], a no-op without a speed limit). The simulation holds its
+    /// command from the measured speed each cycle: every command is held within its drive's
+    /// limits ([`Actuator::limit`]), torque commands within the torque-speed envelope at the
+    /// joint speed in `z` ([`Actuator::torque_envelope`]). The simulation holds its
     /// controller's commands this way; sampled per cycle, the line's slope `effort / omega_max`
     /// adds no stiffness to the integrated plant (a light joint without rotor inertia would
-    /// need `h effort / (omega_max I) <= 2.785` for RK4 otherwise).
+    /// need `h effort / (omega_max I) <= 2.785` for RK4 otherwise). [`Self::commands`] then
+    /// holds the limited values.
     pub fn hold_commands(&mut self, c: &Commands, z: &[f64]) -> Result<(), SimError> {
-        self.set_commands(c)?;
-        if c.mode != DriveMode::Torque {
-            return Ok(());
-        }
         if z.len() != self.layout.dim() {
             return Err(SimError::Length {
                 what: "z",
@@ -298,10 +295,11 @@ impl Plant {
                 expected: self.layout.dim(),
             });
         }
+        self.set_commands(c)?;
         let v = &z[self.layout.v()];
-        for (a, cmd) in self.actuators.iter().zip(&mut self.commands) {
-            let (lo, hi) = a.torque_envelope(v[a.joint_v]);
-            *cmd = cmd.max(lo).min(hi);
+        let held = self.commands.iter_mut().zip(&self.rows);
+        for (a, (cmd, row)) in self.actuators.iter().zip(held) {
+            *cmd = a.limit(c.mode, *cmd, v[a.joint_v], row.is_some());
         }
         Ok(())
     }

@@ -11,7 +11,7 @@ pub use biped_dynamics::{
     centroidal_momentum as centroidal_sample, CentroidalMomentum as CentroidalSample,
 };
 pub use signals::Signals;
-pub use summary::{Check, PassiveSummary, Summary};
+pub use summary::{Check, DriveLimits, LimitedJoint, PassiveSummary, Summary};
 
 use crate::controller::{Commands, Controller};
 use crate::error::SimError;
@@ -49,6 +49,32 @@ pub struct Simulation<C> {
     commands: Commands,
     steps: u64,
     max_contact: f64,
+    /// Control cycles of this run in which the drive limits cut a command, per actuator and
+    /// in all ([`Plant::hold_commands`]).
+    limited: LimitedCommands,
+}
+
+/// Counts of commands cut by the drive limits ([`Plant::hold_commands`]) over a run.
+#[derive(Debug, Clone, Default)]
+struct LimitedCommands {
+    /// Per actuator: cycles in which its command was cut.
+    per_actuator: Vec<u64>,
+    /// Cycles in which at least one command was cut.
+    cycles: u64,
+}
+
+impl LimitedCommands {
+    /// Counts the commands `held` that differ from the controller's `wanted`.
+    fn count(&mut self, wanted: &[f64], held: &[f64]) {
+        let mut any = false;
+        for ((n, w), h) in self.per_actuator.iter_mut().zip(wanted).zip(held) {
+            if w != h {
+                *n += 1;
+                any = true;
+            }
+        }
+        self.cycles += u64::from(any);
+    }
 }
 
 /// Maps an integrator error, keeping the plant's own error.
@@ -128,7 +154,8 @@ impl<C: Controller> Simulation<C> {
         let integrator = Integrator::new(method, n, settings)
             .map_err(|e| SimError::Integrator(e.to_string()))?;
         let sensors = Sensors::new(&plant);
-        let commands = Commands::new(plant.mode(), plant.actuators().len());
+        let plant_actuators = plant.actuators().len();
+        let commands = Commands::new(plant.mode(), plant_actuators);
         Ok(Self {
             plant,
             controller,
@@ -139,6 +166,10 @@ impl<C: Controller> Simulation<C> {
             commands,
             steps: 0,
             max_contact: 0.0,
+            limited: LimitedCommands {
+                per_actuator: vec![0; plant_actuators],
+                cycles: 0,
+            },
         })
     }
 
@@ -192,6 +223,8 @@ impl<C: Controller> Simulation<C> {
         let cycles = (duration / period).round() as u64;
         let (t0, rhs0, steps0) = (self.t, self.plant.rhs_count(), self.steps);
         let com0 = self.com()?;
+        self.limited.per_actuator.fill(0);
+        self.limited.cycles = 0;
         let start = Instant::now();
         for k in 0..cycles {
             self.cycle(observer)?;
@@ -253,6 +286,8 @@ impl<C: Controller> Simulation<C> {
         self.controller
             .update(self.t, &self.sensors, &mut self.commands)?;
         self.plant.hold_commands(&self.commands, &self.z)?;
+        self.limited
+            .count(&self.commands.values, self.plant.commands());
         self.observe(observer)
     }
 

@@ -63,8 +63,47 @@ pub struct Summary {
     pub final_max_joint_speed: f64,
     /// The plant's passive joint layer (end stops, joint friction).
     pub passive: PassiveSummary,
+    /// How often the drive limits (effort, torque-speed line, current and voltage limits) cut
+    /// the controller's commands.
+    pub drive_limits: DriveLimits,
     /// Pass criteria (filled by a scenario).
     pub checks: Vec<Check>,
+}
+
+/// Commands cut by the drive limits over a run ([`crate::plant::Plant::hold_commands`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DriveLimits {
+    /// Control cycles in which at least one command was cut.
+    pub cycles: u64,
+    /// The actuator cut in the most cycles (the first in actuator order among equals), `None`
+    /// if no command was cut.
+    pub most: Option<LimitedJoint>,
+}
+
+/// One actuator's count of cut commands.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LimitedJoint {
+    /// Joint name.
+    pub joint: String,
+    /// Control cycles in which its command was cut.
+    pub cycles: u64,
+}
+
+impl DriveLimits {
+    /// The limits summary from the per-actuator counts (actuator order) and the total.
+    pub(super) fn of(plant: &crate::plant::Plant, per_actuator: &[u64], cycles: u64) -> Self {
+        let most = per_actuator
+            .iter()
+            .zip(plant.actuators())
+            .filter(|(n, _)| **n > 0)
+            .rev() // max_by_key keeps the last maximum: the first in actuator order.
+            .max_by_key(|(n, _)| **n)
+            .map(|(n, a)| LimitedJoint {
+                joint: a.name.clone(),
+                cycles: *n,
+            });
+        Self { cycles, most }
+    }
 }
 
 /// Size and fastest law of the plant's passive joint layer ([`crate::passive`]).
@@ -136,6 +175,7 @@ impl Summary {
             initial_com: com0.into(),
             final_com: com1.into(),
             max_contact_force: sim.max_contact,
+            drive_limits: DriveLimits::of(plant, &sim.limited.per_actuator, sim.limited.cycles),
             final_contact_force: plant
                 .last_outputs()
                 .contact
