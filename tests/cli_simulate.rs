@@ -309,6 +309,70 @@ fn urdf_rotors_from_armature() {
     assert!(checks.iter().all(|c| c["passed"] == true), "{s}");
 }
 
+/// An SRDF's rotors (`N^2 J`) and group state give bitwise the same run as the equivalent
+/// `--armature` and `--pose` (values exact in binary); its entries for joints the URDF does
+/// not move are skipped with a warning, the free-flyer's value is left to the scenario.
+#[test]
+fn srdf_rotors_and_group_state_match_armature_and_pose() {
+    let bent = [("hip_pitch", -0.25), ("knee", 0.5), ("ankle_pitch", -0.25)];
+    let joints: Vec<(String, f64)> = ["left", "right"]
+        .iter()
+        .flat_map(|s| bent.map(|(j, a)| (format!("{s}_{j}_joint"), a)))
+        .collect();
+    let state: String = joints
+        .iter()
+        .map(|(j, a)| format!("    <joint name=\"{j}\" value=\"{a}\"/>\n"))
+        .collect();
+    let srdf = format!(
+        "<robot name=\"g1\">\n  <group_state name=\"bent\" group=\"all\">\n    \
+         <joint name=\"root_joint\" value=\"0 0 0.8 0 0 0 1\"/>\n{state}    \
+         <joint name=\"no_such_joint\" value=\"1\"/>\n  </group_state>\n  <rotor_params>\n    \
+         <joint name=\"left_knee_joint\" mass=\"0.015625\" gear_ratio=\"2\"/>\n    \
+         <joint name=\"right_knee_joint\" mass=\"0.015625\" gear_ratio=\"2\"/>\n    \
+         <joint name=\"no_such_joint\" mass=\"1\" gear_ratio=\"1\"/>\n  </rotor_params>\n</robot>\n"
+    );
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_simulate");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("g1.srdf");
+    std::fs::write(&file, srdf).unwrap();
+    let pose: Vec<String> = joints.iter().map(|(j, a)| format!("{j}={a}")).collect();
+    let base = [
+        "--urdf",
+        G1,
+        "--floating",
+        "--feet",
+        "left_ankle_roll_link,right_ankle_roll_link",
+        "--duration",
+        "0.2",
+    ];
+    let by_hand = [
+        "--pose",
+        &pose.join(","),
+        "--armature",
+        "left_knee_joint=0.0625,right_knee_joint=0.0625",
+    ];
+    let by_srdf = ["--srdf", file.to_str().unwrap(), "--srdf-state", "bent"];
+    let runs: Vec<(Value, Vec<Vec<f64>>, String)> = [&by_hand[..], &by_srdf[..]]
+        .iter()
+        .enumerate()
+        .map(|(k, extra)| {
+            let args: Vec<&str> = base.iter().chain(extra.iter()).copied().collect();
+            let (out, dir) = simulate(&format!("g1_srdf_{k}"), &args);
+            let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+            (summary(&out, &dir), csv(&dir).1, stderr)
+        })
+        .collect();
+    assert_eq!(runs[0].1.last(), runs[1].1.last(), "same final row");
+    assert_eq!(runs[0].0["final_com"], runs[1].0["final_com"]);
+    let warnings = &runs[1].2;
+    assert!(
+        warnings.contains("g1.srdf:15: 1 rotor_params entries")
+            && warnings.contains("`no_such_joint`")
+            && warnings.contains("g1.srdf:2: group_state `bent` sets 1 joints"),
+        "{warnings}"
+    );
+}
+
 #[test]
 fn failures_and_criteria_set_the_exit_status() {
     // Explicit Euler at 1 ms on Type 3's stiff gears diverges: one line, partial CSV kept.
@@ -450,6 +514,10 @@ fn bad_inputs_fail_with_one_line() {
             &["--no-joint-friction"],
             &["--no-joint-friction", "only applies with --urdf"],
         ),
+        (
+            &["--srdf", "x.srdf"],
+            &["--srdf", "only applies with --urdf"],
+        ),
     ];
     for (args, expected) in cases {
         fails_with("bad", args, expected);
@@ -471,6 +539,18 @@ fn bad_inputs_fail_with_one_line() {
         (
             &["--armature", "*_knee_joint=-0.02"],
             &["--armature", "*_knee_joint", ">= 0"],
+        ),
+        (
+            &["--srdf-state", "half_sitting"],
+            &["--srdf-state", "needs --srdf"],
+        ),
+        (
+            &["--srdf", "/no/such.srdf"],
+            &["--srdf", "/no/such.srdf", "cannot read SRDF"],
+        ),
+        (
+            &["--srdf", G1, "--srdf-state", "bent"],
+            &["--srdf-state", "no group_state `bent`", "(it has: none)"],
         ),
     ];
     for (extra, expected) in on_g1 {

@@ -61,6 +61,14 @@ pub struct SimulateArgs {
     /// e.g. `*_knee_joint=0.025,*_ankle_*=0.0072` (`*` matches any run; first match wins).
     #[arg(long, value_name = "JOINT=KG_M2,...", allow_hyphen_values = true)]
     armature: Option<String>,
+    /// The URDF robot's SRDF: its `<rotor_params>` add motor rotors of reflected inertia
+    /// `N^2 J` (after the `--armature` entries, which win).
+    #[arg(long, value_name = "FILE")]
+    srdf: Option<PathBuf>,
+    /// Start pose from the SRDF's `<group_state>` NAME (e.g. TALOS's `half_sitting`); `--pose`
+    /// entries override its joints.
+    #[arg(long, value_name = "NAME")]
+    srdf_state: Option<String>,
     /// Ignore the URDF's joint ranges (no end stops at `<limit lower upper>`).
     #[arg(long)]
     no_end_stops: bool,

@@ -48,6 +48,7 @@ fn setup_g1(rotors: bool) -> (Plant, Scenario) {
     let armature = rotors.then(|| Armature {
         pattern: "*".into(),
         inertia: 0.01,
+        required: true,
     });
     let mut plant = urdf_plant(&path, &feet, armature.as_slice(), config).unwrap();
     let pose = ["left", "right"]

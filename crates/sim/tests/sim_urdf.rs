@@ -94,6 +94,7 @@ fn g1_with_rotors_comes_to_rest() {
         .map(|(p, a)| Armature {
             pattern: p.to_string(),
             inertia: *a,
+            required: true,
         })
         .collect();
     let short = g1_stand(&armature, 20.0, 3.0);
@@ -124,20 +125,26 @@ fn g1_with_rotors_comes_to_rest() {
 
 #[test]
 fn armature_patterns_must_name_revolute_joints() {
-    let bad = [Armature {
+    let typo = |required| Armature {
         pattern: "*_elbow_jiont".into(),
         inertia: 0.01,
-    }];
+        required,
+    };
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../dynamics/data/g1_29dof_rev_1_0.urdf");
     let feet = UrdfFeet::new("left_ankle_roll_link", "right_ankle_roll_link");
-    let err = urdf_plant(&path, &feet, &bad, PlantConfig::default()).unwrap_err();
+    let err = urdf_plant(&path, &feet, &[typo(true)], PlantConfig::default()).unwrap_err();
     assert!(
         err.to_string().contains("matches no revolute joint"),
         "{err}"
     );
+    // An optional entry (an SRDF rotor of a joint the URDF lacks) is skipped: no rotor body.
+    let bare = urdf_plant(&path, &feet, &[], PlantConfig::default()).unwrap();
+    let skipped = urdf_plant(&path, &feet, &[typo(false)], PlantConfig::default()).unwrap();
+    assert_eq!(skipped.model().nbodies(), bare.model().nbodies());
     let negative = [Armature {
         pattern: "*_knee_joint".into(),
         inertia: -0.01,
+        required: false,
     }];
     let err = urdf_plant(&path, &feet, &negative, PlantConfig::default()).unwrap_err();
     assert!(err.to_string().contains("armature"), "{err}");

@@ -3,6 +3,7 @@
 
 use super::parse::{names, numbers, parse_armature};
 use super::SimulateArgs;
+use biped_dynamics::urdf::srdf::{load_srdf_file, Srdf};
 use biped_robots::lola::LolaType;
 use biped_sim::contact::ContactParams;
 use biped_sim::plant::{lola_plant, urdf_plant, Armature, Plant, PlantConfig, UrdfFeet};
@@ -44,6 +45,8 @@ pub fn urdf_only(a: &SimulateArgs) -> Result<(), String> {
         ("--no-end-stops", a.no_end_stops),
         ("--no-joint-friction", a.no_joint_friction),
         ("--sway-joints", a.sway_joints.is_some()),
+        ("--srdf", a.srdf.is_some()),
+        ("--srdf-state", a.srdf_state.is_some()),
     ];
     match given.iter().find(|(_, on)| *on) {
         Some((option, _)) => Err(format!("{option}: only applies with --urdf FILE")),
@@ -65,7 +68,15 @@ pub fn urdf_source(
         return Err(why.into());
     }
     let feet = urdf_feet(a)?;
-    let armature = armature(a)?;
+    let srdf = srdf(a)?;
+    let mut armature = armature(a)?;
+    if let Some((_, s)) = &srdf {
+        armature.extend(s.rotors.iter().map(|r| Armature {
+            pattern: r.joint.clone(),
+            inertia: r.armature(),
+            required: false,
+        }));
+    }
     let mut config = plant_config(a, ContactParams::light_feet())?;
     config.passive.end_stops = !a.no_end_stops;
     config.passive.joint_friction = !a.no_joint_friction;
@@ -77,12 +88,88 @@ pub fn urdf_source(
         e @ SimError::Unknown { .. } => format!("--feet: {e} in {}", path.display()),
         e => format!("{}: {e}", path.display()),
     })?;
-    let options = ScenarioOptions {
+    let mut options = ScenarioOptions {
         sway_joints: sway_joints(a, kind)?,
         ..ScenarioOptions::default()
     };
+    if let Some((file, s)) = &srdf {
+        warn_unused_rotors(file, s, &plant, path);
+        if let Some(name) = &a.srdf_state {
+            options.pose = srdf_pose(file, s, name, &plant)?;
+        }
+    }
     let step = options.period;
     Ok((plant, options, path.display().to_string(), step))
+}
+
+/// The SRDF of `--srdf` with its file name; `--srdf-state` needs it.
+fn srdf(a: &SimulateArgs) -> Result<Option<(String, Srdf)>, String> {
+    match (&a.srdf, &a.srdf_state) {
+        (Some(path), _) => {
+            let s = load_srdf_file(path).map_err(|e| format!("--srdf: {e}"))?;
+            Ok(Some((path.display().to_string(), s)))
+        }
+        (None, Some(_)) => Err("--srdf-state: needs --srdf FILE".into()),
+        (None, None) => Ok(None),
+    }
+}
+
+/// Warns (stderr) about SRDF rotors of joints the URDF model does not move (e.g. a reduced
+/// model's locked joints): they were skipped.
+fn warn_unused_rotors(file: &str, s: &Srdf, plant: &Plant, urdf: &Path) {
+    let moved = |j: &str| plant.actuators().iter().any(|a| a.name == j);
+    let unused: Vec<_> = s.rotors.iter().filter(|r| !moved(&r.joint)).collect();
+    if let Some(first) = unused.first() {
+        eprintln!(
+            "warning: {file}:{}: {} rotor_params entries name joints that {} does not move \
+             (first `{}`); skipped",
+            first.line,
+            unused.len(),
+            urdf.display(),
+            first.joint
+        );
+    }
+}
+
+/// The one-DoF joint values of the SRDF group state `name` as a start pose; a free-flyer's
+/// value is left out (the scenario places the base) and so, with a warning, are joints the
+/// URDF model does not move.
+fn srdf_pose(
+    file: &str,
+    s: &Srdf,
+    name: &str,
+    plant: &Plant,
+) -> Result<Vec<(String, f64)>, String> {
+    let state = s.state(name).ok_or_else(|| {
+        let have: Vec<_> = s.states.iter().map(|g| g.name.as_str()).collect();
+        format!(
+            "--srdf-state: no group_state `{name}` in {file} (it has: {})",
+            if have.is_empty() {
+                "none".to_string()
+            } else {
+                have.join(", ")
+            }
+        )
+    })?;
+    let moved = |j: &str| plant.actuators().iter().any(|a| a.name == j);
+    let mut pose = Vec::new();
+    let mut unknown = Vec::new();
+    for (joint, values) in &state.joints {
+        match values[..] {
+            [x] if moved(joint) => pose.push((joint.clone(), x)),
+            [_] => unknown.push(joint.as_str()),
+            _ => {} // A multi-coordinate joint: the floating base.
+        }
+    }
+    if let Some(first) = unknown.first() {
+        eprintln!(
+            "warning: {file}:{}: group_state `{name}` sets {} joints the URDF does not move \
+             (first `{first}`); skipped",
+            state.line,
+            unknown.len()
+        );
+    }
+    Ok(pose)
 }
 
 /// Rotor inertias from `--armature` (none without it).
@@ -93,7 +180,11 @@ fn armature(a: &SimulateArgs) -> Result<Vec<Armature>, String> {
     let pairs = parse_armature(text)?;
     Ok(pairs
         .into_iter()
-        .map(|(pattern, inertia)| Armature { pattern, inertia })
+        .map(|(pattern, inertia)| Armature {
+            pattern,
+            inertia,
+            required: true,
+        })
         .collect())
 }
 

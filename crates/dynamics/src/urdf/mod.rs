@@ -18,10 +18,14 @@
 //!   `<collision>` and `<material>` elements are removed before parsing (see `strip`). `<mimic>` tags are
 //!   ignored with a warning (the joints stay independent) unless [`UrdfOptions::reject_mimic`].
 //! - Bodies and coordinates follow a depth-first traversal from the root, children in file order.
+//!
+//! The robot's SRDF adds what the URDF lacks for simulation ([`srdf`]): motor rotors and named
+//! configurations.
 
 mod error;
 mod joints;
 mod locate;
+pub mod srdf;
 mod strip;
 mod tree;
 

@@ -13,11 +13,14 @@ pub struct Armature {
     pub pattern: String,
     /// `N^2 J` in kg m^2 (>= 0).
     pub inertia: f64,
+    /// A required entry that matches no revolute joint is an error (a typo in `--armature`);
+    /// others are skipped (SRDF rotors of joints a reduced URDF locks).
+    pub required: bool,
 }
 
 /// `model` with a rotor of gear ratio `ratio` on every revolute joint that an entry of
-/// `armature` names (the first matching entry wins); an entry that matches no revolute joint,
-/// or a negative or non-finite inertia, is an error.
+/// `armature` names (the first matching entry wins); a required entry that matches no revolute
+/// joint, or a negative or non-finite inertia, is an error.
 pub(crate) fn with_rotors(
     model: &Model,
     armature: &[Armature],
@@ -47,7 +50,7 @@ pub(crate) fn with_rotors(
             .map_err(|e| invalid(format!("joint `{name}`: {e}")))?;
         specs.push(spec);
     }
-    if let Some(k) = used.iter().position(|u| !u) {
+    if let Some(k) = (0..armature.len()).find(|&k| !used[k] && armature[k].required) {
         let p = &armature[k].pattern;
         return Err(invalid(format!("pattern `{p}` matches no revolute joint")));
     }
