@@ -373,6 +373,41 @@ fn srdf_rotors_and_group_state_match_armature_and_pose() {
     );
 }
 
+/// Each `--plot` writes one SVG of the columns its names and patterns match (each column
+/// once, in the order asked), listed in the summary's files.
+#[test]
+fn chosen_signals_are_plotted() {
+    let args = [
+        "--lola",
+        "type2",
+        "--duration",
+        "0.05",
+        "--plot",
+        "q[10],com.z",
+        "--plot",
+        "left.f*,left.fz",
+    ];
+    let (out, dir) = simulate("plots", &args);
+    let s = summary(&out, &dir);
+    let files = s["files"].as_array().unwrap();
+    for (k, labels, absent) in [
+        (1, &["q[10]", "com.z"][..], "left.fx"),
+        (2, &["left.fx", "left.fy", "left.fz"][..], "left.tx"),
+    ] {
+        let file = format!("plot_{k}.svg");
+        assert!(files.iter().any(|f| f == &file), "{file} listed");
+        let svg = std::fs::read_to_string(dir.join(&file)).unwrap();
+        for l in labels {
+            assert!(svg.contains(&format!("\n{l}\n")), "{file}: legend {l}");
+        }
+        assert!(
+            !svg.contains(&format!("\n{absent}\n")),
+            "{file}: not {absent}"
+        );
+        assert_eq!(svg.matches("\nleft.fz\n").count(), usize::from(k == 2));
+    }
+}
+
 #[test]
 fn failures_and_criteria_set_the_exit_status() {
     // Explicit Euler at 1 ms on Type 3's stiff gears diverges: one line, partial CSV kept.

@@ -110,6 +110,10 @@ pub struct SimulateArgs {
         allow_hyphen_values = true
     )]
     every: String,
+    /// Also plot the chosen signals: `signals.csv` column names or `*` patterns, comma-separated
+    /// (e.g. `q[10],left.f*`); each `--plot` writes one `plot_<k>.svg`.
+    #[arg(long, value_name = "SIGNALS", action = clap::ArgAction::Append)]
+    plot: Vec<String>,
     /// Output folder (default `out/simulate/<scenario>`).
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
@@ -131,6 +135,7 @@ pub fn run(args: SimulateArgs) -> CliResult {
     // Columns registered and the buffer mapped before the timed loop (no page faults in it).
     signals.register(&mut rec)?;
     output::register_total(&mut rec)?;
+    let chosen = output::chosen_plots(&rec, &args.plot)?;
     rec.prefault();
     let mut bar = progress::Progress::new(duration);
     let mut last_t = 0.0;
@@ -155,7 +160,7 @@ pub fn run(args: SimulateArgs) -> CliResult {
         }
     };
     let plant = sim.plant();
-    let files = output::write_all(&rec, plant, &summary, &info, &out_dir)?;
+    let files = output::write_all(&rec, plant, &summary, &info, &chosen, &out_dir)?;
     report::print_report(&summary, plant, &rec, &info, &out_dir, &files);
     let failed = args.check && !summary.passed();
     Ok(if failed {

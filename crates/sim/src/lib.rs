@@ -12,6 +12,7 @@ pub mod contact;
 pub mod controller;
 pub mod drive;
 pub mod error;
+pub mod glob;
 pub mod ode;
 pub mod passive;
 pub mod plant;

@@ -3,6 +3,7 @@
 
 use super::report::{final_base_height, summary_json};
 use super::setup::Info;
+use biped_sim::glob::glob_match;
 use biped_sim::plant::Plant;
 use biped_sim::record::Recorder;
 use biped_sim::simulation::{Frame, Summary};
@@ -49,7 +50,7 @@ pub fn write_partial(rec: &Recorder, dir: &Path) -> String {
 }
 
 /// One line of a plot: legend label and recorder column.
-struct Line {
+pub struct Line {
     label: String,
     column: String,
 }
@@ -64,8 +65,8 @@ impl Line {
 }
 
 /// One SVG: file name, title (without the run description), lines and y-axis label.
-struct Plot {
-    file: &'static str,
+pub struct Plot {
+    file: String,
     title: String,
     lines: Vec<Line>,
     y_label: &'static str,
@@ -86,8 +87,8 @@ fn per_foot(plant: &Plant, components: &[&str]) -> Vec<Line> {
 /// The plots of a run: base and CoM height, contact forces, foot shear and torques, angular
 /// momentum about the CoM, joint angles and motor currents (the largest [`MAX_LINES`]).
 fn plots(rec: &Recorder, plant: &Plant) -> Vec<Plot> {
-    let plot = |file, title: &str, lines, y_label| Plot {
-        file,
+    let plot = |file: &str, title: &str, lines, y_label| Plot {
+        file: file.to_string(),
         title: title.to_string(),
         lines,
         y_label,
@@ -153,24 +154,65 @@ fn plots(rec: &Recorder, plant: &Plant) -> Vec<Plot> {
     out
 }
 
-/// Writes the CSV, the plots and `summary.json` into `dir`; returns the file names.
+/// The plots of `--plot` (each a comma-separated list of column names or `*` patterns of
+/// `rec`, whose columns are registered), as `plot_<k>.svg`; an entry that matches no column is
+/// an error.
+pub fn chosen_plots(rec: &Recorder, options: &[String]) -> OutResult<Vec<Plot>> {
+    let mut out = Vec::new();
+    for (k, text) in options.iter().enumerate() {
+        let mut lines: Vec<Line> = Vec::new();
+        for pattern in text.split(',').map(str::trim) {
+            let names = rec.column_names().iter();
+            let found: Vec<&String> = names.filter(|c| glob_match(pattern, c)).collect();
+            if found.is_empty() {
+                let some: Vec<&str> = rec
+                    .column_names()
+                    .iter()
+                    .take(4)
+                    .map(|c| c.as_str())
+                    .collect();
+                return Err(format!(
+                    "--plot: `{pattern}` matches no recorded signal (columns of signals.csv: {}, ...)",
+                    some.join(", ")
+                )
+                .into());
+            }
+            for c in found {
+                if !lines.iter().any(|l| &l.column == c) {
+                    lines.push(Line::new(c.clone(), c.clone()));
+                }
+            }
+        }
+        out.push(Plot {
+            file: format!("plot_{}.svg", k + 1),
+            title: format!("Signals {text}"),
+            lines,
+            y_label: "value",
+        });
+    }
+    Ok(out)
+}
+
+/// Writes the CSV, the plots (the standard ones, then the `chosen` ones) and `summary.json`
+/// into `dir`; returns the file names.
 pub fn write_all(
     rec: &Recorder,
     plant: &Plant,
     summary: &Summary,
     info: &Info,
+    chosen: &[Plot],
     dir: &Path,
 ) -> OutResult<Vec<String>> {
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let mut files = vec!["signals.csv".to_string()];
     rec.write_csv(&dir.join(&files[0]))?;
-    for p in plots(rec, plant) {
+    for p in plots(rec, plant).iter().chain(chosen) {
         let title = format!(
             "{} ({} {}, {})",
             p.title, info.model, info.scenario, info.method
         );
-        plot(rec, &dir.join(p.file), &title, &p.lines, p.y_label)?;
-        files.push(p.file.to_string());
+        plot(rec, &dir.join(&p.file), &title, &p.lines, p.y_label)?;
+        files.push(p.file.clone());
     }
     files.push("summary.json".to_string());
     let json = summary_json(summary, final_base_height(rec, plant), plant, info, &files)?;

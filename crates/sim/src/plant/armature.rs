@@ -3,6 +3,7 @@
 //! model as geared rotor bodies (thesis 3.1, [`Model::with_geared_rotors`]).
 
 use crate::error::SimError;
+use crate::glob::glob_match;
 use biped_dynamics::{Body, JointModel, Model, RotorSpec};
 
 /// Reflected rotor inertia for the joints whose name matches `pattern` (`*` matches any run of
@@ -35,7 +36,7 @@ pub(crate) fn with_rotors(
     let mut specs = Vec::new();
     for (j, body) in model.bodies().iter().enumerate().filter(revolute) {
         let name = body.joint_name();
-        let Some(k) = armature.iter().position(|a| matches(&a.pattern, name)) else {
+        let Some(k) = armature.iter().position(|a| glob_match(&a.pattern, name)) else {
             continue;
         };
         used[k] = true;
@@ -57,44 +58,4 @@ pub(crate) fn with_rotors(
     model
         .with_geared_rotors(&specs)
         .map_err(|e| invalid(e.to_string()))
-}
-
-/// Glob match with `*` as the only wildcard.
-fn matches(pattern: &str, name: &str) -> bool {
-    let mut parts = pattern.split('*');
-    let first = parts.next().unwrap_or("");
-    let Some(mut rest) = name.strip_prefix(first) else {
-        return false;
-    };
-    let parts: Vec<&str> = parts.collect();
-    let Some((last, middle)) = parts.split_last() else {
-        return rest.is_empty(); // No `*`: exact match.
-    };
-    for part in middle {
-        match rest.find(part) {
-            Some(at) => rest = &rest[at + part.len()..],
-            None => return false,
-        }
-    }
-    rest.len() >= last.len() && rest.ends_with(last)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::matches;
-
-    #[test]
-    fn glob_patterns() {
-        assert!(matches("left_knee_joint", "left_knee_joint"));
-        assert!(!matches("left_knee_joint", "left_knee_joint2"));
-        assert!(matches("*_knee_joint", "left_knee_joint"));
-        assert!(matches("*knee*", "left_knee_joint"));
-        assert!(matches("*", ""));
-        assert!(matches("left_*_joint", "left_hip_pitch_joint"));
-        assert!(!matches("left_*_joint", "right_hip_pitch_joint"));
-        assert!(!matches("*_ankle_*_joint", "left_knee_joint"));
-        assert!(matches("a*a", "aa"));
-        assert!(!matches("a*a", "a"));
-        assert!(matches("*_hip_*", "left_hip_roll_joint"));
-    }
 }
