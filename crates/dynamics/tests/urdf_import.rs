@@ -175,7 +175,7 @@ fn zero_axis_is_a_located_error() {
         .matches('\n')
         .count();
     let (err, text) = error_of(&xml, &UrdfOptions::default());
-    assert!(matches!(err, UrdfError::Invalid { .. }));
+    assert!(matches!(err, UrdfError::Invalid(_)));
     assert!(
         text.starts_with(&format!("test.urdf:{line}: joint \"j3\"")),
         "{text}"

@@ -23,6 +23,18 @@ impl fmt::Display for Location {
     }
 }
 
+/// A well-formed element of a URDF or SRDF document whose content is unusable.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{at}: {field}: {problem}")]
+pub struct InvalidElement {
+    /// The element at fault.
+    pub at: Location,
+    /// The attribute or child element at fault, e.g. `axis xyz`.
+    pub field: String,
+    /// What is wrong with it.
+    pub problem: String,
+}
+
 /// Errors of [`load_file`](super::load_file) and [`load_str`](super::load_str).
 #[derive(Debug, thiserror::Error)]
 pub enum UrdfError {
@@ -43,15 +55,8 @@ pub enum UrdfError {
         message: String,
     },
     /// An element is well-formed but its content is unusable.
-    #[error("{at}: {field}: {problem}")]
-    Invalid {
-        /// The element at fault.
-        at: Location,
-        /// The attribute or child element at fault, e.g. `axis xyz`.
-        field: String,
-        /// What is wrong with it.
-        problem: String,
-    },
+    #[error(transparent)]
+    Invalid(#[from] InvalidElement),
     /// The model builder rejected a body built from this element (e.g. a non-physical inertia).
     #[error("{at}: {source}")]
     Model {

@@ -29,7 +29,7 @@ pub mod srdf;
 mod strip;
 mod tree;
 
-pub use error::{Location, UrdfError};
+pub use error::{InvalidElement, Location, UrdfError};
 pub use joints::JointProps;
 
 use crate::{BodyId, Model};

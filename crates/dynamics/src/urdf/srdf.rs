@@ -4,7 +4,7 @@
 //! so the joint's reflected inertia is `N^2 J`) and the named joint configurations
 //! (`<group_state>`, e.g. TALOS's `half_sitting`).
 
-use super::Location;
+use super::{InvalidElement, Location};
 use std::path::Path;
 
 /// Errors of [`load_srdf_file`] and [`parse_srdf`].
@@ -28,16 +28,10 @@ pub enum SrdfError {
         /// Parser message.
         message: String,
     },
-    /// An element is well-formed but its content is unusable.
-    #[error("{at}: {field}: {problem}")]
-    Invalid {
-        /// The element at fault.
-        at: Location,
-        /// The attribute at fault, e.g. `gear_ratio`.
-        field: String,
-        /// What is wrong with it.
-        problem: String,
-    },
+    /// An element is well-formed but its content is unusable (the attribute at fault, e.g.
+    /// `gear_ratio`).
+    #[error(transparent)]
+    Invalid(#[from] InvalidElement),
 }
 
 /// The motor rotor of one joint (`<rotor_params><joint name mass gear_ratio/>`).
@@ -233,11 +227,11 @@ fn locate(file: &str, node: &roxmltree::Node, element: String) -> Location {
 
 /// An [`SrdfError::Invalid`].
 fn invalid(at: Location, field: &str, problem: &str) -> SrdfError {
-    SrdfError::Invalid {
+    SrdfError::Invalid(InvalidElement {
         at,
         field: field.to_string(),
         problem: problem.to_string(),
-    }
+    })
 }
 
 #[cfg(test)]

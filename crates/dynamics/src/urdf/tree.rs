@@ -1,6 +1,6 @@
 //! Conversion of a parsed URDF tree into bodies: topology checks, fixed-joint merging.
 
-use super::error::{Location, UrdfError};
+use super::error::{InvalidElement, Location, UrdfError};
 use super::joints::joint_props;
 use super::locate::element_line;
 use super::{LinkFrame, UrdfModel, UrdfOptions};
@@ -29,11 +29,11 @@ impl Source<'_> {
 
     /// An [`UrdfError::Invalid`] at `<tag name="name">`.
     pub(super) fn invalid(&self, tag: &str, name: &str, field: &str, problem: String) -> UrdfError {
-        UrdfError::Invalid {
+        UrdfError::Invalid(InvalidElement {
             at: self.at(tag, name),
             field: field.to_string(),
             problem,
-        }
+        })
     }
 }
 
