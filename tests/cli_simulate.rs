@@ -373,6 +373,36 @@ fn srdf_rotors_and_group_state_match_armature_and_pose() {
     );
 }
 
+/// `--friction MU` bounds every foot's tangential force by `mu F_z` (each sole point's force
+/// lies in its cone, so their sums do), and on the sway the bound is reached.
+#[test]
+fn ground_friction_bounds_the_foot_shear() {
+    let mu = 0.05;
+    let args = [
+        "--lola",
+        "type2",
+        "--scenario",
+        "sway",
+        "--friction",
+        "0.05",
+    ];
+    let (out, dir) = simulate("friction", &args);
+    summary(&out, &dir);
+    let table = csv(&dir);
+    let mut worst = 0.0f64;
+    for foot in ["left", "right"] {
+        let [fx, fy, fz] = ["fx", "fy", "fz"].map(|c| column(&table, &format!("{foot}.{c}")));
+        for k in 0..fz.len() {
+            let shear = fx[k].hypot(fy[k]);
+            assert!(shear <= mu * fz[k] * (1.0 + 1e-9) + 1e-9, "{foot} row {k}");
+            if fz[k] > 1.0 {
+                worst = worst.max(shear / fz[k]);
+            }
+        }
+    }
+    assert!(worst > 0.99 * mu, "the cone is reached: {worst}");
+}
+
 /// Each `--plot` writes one SVG of the columns its names and patterns match (each column
 /// once, in the order asked), listed in the summary's files.
 #[test]

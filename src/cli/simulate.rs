@@ -79,6 +79,9 @@ pub struct SimulateArgs {
     /// (default: Lola 2e5,400; URDF 5e4,100 for the light feet of URDF robots).
     #[arg(long, value_name = "K,D", allow_hyphen_values = true)]
     contact: Option<String>,
+    /// Coulomb friction coefficient `mu` between soles and ground (default 0.8).
+    #[arg(long, value_name = "MU", allow_hyphen_values = true)]
+    friction: Option<String>,
     /// Initial joint angles in rad, e.g. `knee=0.4,hip=-0.2` (Lola: added to its bent-knee pose).
     #[arg(long, value_name = "JOINT=ANGLE,...", allow_hyphen_values = true)]
     pose: Option<String>,

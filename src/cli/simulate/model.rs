@@ -230,7 +230,7 @@ fn sway_joints(a: &SimulateArgs, kind: ScenarioKind) -> Result<Option<SwayJoints
     }
 }
 
-/// Plant options: `--contact K,D` on top of the `base` contact law.
+/// Plant options: `--contact K,D` and `--friction MU` on top of the `base` contact law.
 fn plant_config(a: &SimulateArgs, base: ContactParams) -> Result<PlantConfig, SetupError> {
     let contact = match &a.contact {
         Some(text) => {
@@ -244,8 +244,18 @@ fn plant_config(a: &SimulateArgs, base: ContactParams) -> Result<PlantConfig, Se
         }
         None => base,
     };
+    let friction = match &a.friction {
+        Some(text) => match text.trim().parse::<f64>() {
+            Ok(mu) if mu.is_finite() && mu >= 0.0 => mu,
+            _ => return Err(format!("--friction: need a finite mu >= 0, got \"{text}\"").into()),
+        },
+        None => contact.friction,
+    };
     Ok(PlantConfig {
-        contact,
+        contact: ContactParams {
+            friction,
+            ..contact
+        },
         ..PlantConfig::default()
     })
 }
