@@ -232,7 +232,7 @@ impl Controller for Hold {
 fn the_simulation_counts_commands_cut_by_the_drive_limits() {
     let (effort, w_max, n) = (0.05, 2.0, 300u64);
     let factor = 1.0 - 1e-3 * effort / (I_ZZ * w_max);
-    let mut run = |tau: f64| {
+    let run = |tau: f64| {
         let p = limited(spec(None, 0.0, 0.0), effort, w_max);
         let z0 = p
             .initial_state(&DVector::zeros(1), &DVector::zeros(1))
