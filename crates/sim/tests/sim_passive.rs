@@ -12,7 +12,7 @@ use biped_sim::ode::Method;
 use biped_sim::passive::{EndStop, JointFriction, JointSpec, PassiveJoints, PassiveParams};
 use biped_sim::plant::{Plant, PlantConfig};
 use biped_sim::sensors::Sensors;
-use biped_sim::simulation::Simulation;
+use biped_sim::simulation::{Frame, Simulation};
 use biped_sim::SimError;
 use nalgebra::DVector;
 use proptest::prelude::*;
@@ -238,7 +238,15 @@ fn the_simulation_counts_commands_cut_by_the_drive_limits() {
             .initial_state(&DVector::zeros(1), &DVector::zeros(1))
             .unwrap();
         let mut sim = Simulation::new(p, Hold(tau), Method::Rk4, z0).unwrap();
-        let s = sim.run(n as f64 * 1e-3, &mut |_| Ok(())).unwrap();
+        // The frames show the held commands: within the effort, below tau once cut.
+        let mut held_max = 0.0f64;
+        let mut seen = |f: &Frame| {
+            held_max = held_max.max(f.commands.values[0].abs());
+            Ok(())
+        };
+        let s = sim.run(n as f64 * 1e-3, &mut seen).unwrap();
+        let bound = effort.min(tau.abs());
+        assert!(held_max <= bound && held_max >= 0.5 * bound, "{held_max}");
         (s.drive_limits, sim.state()[1])
     };
     let (cut, w) = run(10.0);

@@ -47,6 +47,8 @@ pub struct Simulation<C> {
     t: f64,
     sensors: Sensors,
     commands: Commands,
+    /// The commands as the plant holds them (within the drive limits).
+    held: Commands,
     steps: u64,
     max_contact: f64,
     /// Control cycles of this run in which the drive limits cut a command, per actuator and
@@ -163,6 +165,7 @@ impl<C: Controller> Simulation<C> {
             z: z0,
             t: 0.0,
             sensors,
+            held: commands.clone(),
             commands,
             steps: 0,
             max_contact: 0.0,
@@ -273,7 +276,7 @@ impl<C: Controller> Simulation<C> {
             z: &self.z,
             plant: &self.plant,
             sensors: &self.sensors,
-            commands: &self.commands,
+            commands: &self.held,
         })
     }
 
@@ -286,8 +289,8 @@ impl<C: Controller> Simulation<C> {
         self.controller
             .update(self.t, &self.sensors, &mut self.commands)?;
         self.plant.hold_commands(&self.commands, &self.z)?;
-        self.limited
-            .count(&self.commands.values, self.plant.commands());
+        self.held.values.copy_from_slice(self.plant.commands());
+        self.limited.count(&self.commands.values, &self.held.values);
         self.observe(observer)
     }
 

@@ -1,6 +1,7 @@
 //! Named signals of a frame for the recorder: `q[i]`, `v[i]`, per foot the ground wrench
 //! (`<foot>.fx .. <foot>.tz`, world axes, torque about the sole reference point) and the
-//! centre of pressure, per actuator the command `cmd[<joint>]` and the motor current
+//! centre of pressure, per actuator the held command `cmd[<joint>]` (within the drive limits)
+//! and the motor current
 //! `i[<joint>]`, and optionally the CoM and the centroidal angular momentum `L_G` about it
 //! ([`biped_dynamics::centroidal_momentum`]). Those are read from the forward-dynamics pass the
 //! plant's workspace holds when it is at the frame's `(q, v)` (the sensors' state pass,
