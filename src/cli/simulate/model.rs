@@ -114,11 +114,19 @@ fn srdf(a: &SimulateArgs) -> Result<Option<(String, Srdf)>, String> {
     }
 }
 
+/// True if `joint` is one of the plant's actuated (movable) joints.
+fn moves(plant: &Plant, joint: &str) -> bool {
+    plant.actuators().iter().any(|a| a.name == joint)
+}
+
 /// Warns (stderr) about SRDF rotors of joints the URDF model does not move (e.g. a reduced
 /// model's locked joints): they were skipped.
 fn warn_unused_rotors(file: &str, s: &Srdf, plant: &Plant, urdf: &Path) {
-    let moved = |j: &str| plant.actuators().iter().any(|a| a.name == j);
-    let unused: Vec<_> = s.rotors.iter().filter(|r| !moved(&r.joint)).collect();
+    let unused: Vec<_> = s
+        .rotors
+        .iter()
+        .filter(|r| !moves(plant, &r.joint))
+        .collect();
     if let Some(first) = unused.first() {
         eprintln!(
             "warning: {file}:{}: {} rotor_params entries name joints that {} does not move \
@@ -151,12 +159,11 @@ fn srdf_pose(
             }
         )
     })?;
-    let moved = |j: &str| plant.actuators().iter().any(|a| a.name == j);
     let mut pose = Vec::new();
     let mut unknown = Vec::new();
     for (joint, values) in &state.joints {
         match values[..] {
-            [x] if moved(joint) => pose.push((joint.clone(), x)),
+            [x] if moves(plant, joint) => pose.push((joint.clone(), x)),
             [_] => unknown.push(joint.as_str()),
             _ => {} // A multi-coordinate joint: the floating base.
         }

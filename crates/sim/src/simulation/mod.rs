@@ -66,6 +66,12 @@ struct LimitedCommands {
 }
 
 impl LimitedCommands {
+    /// Zero counts (start of a run).
+    fn reset(&mut self) {
+        self.per_actuator.fill(0);
+        self.cycles = 0;
+    }
+
     /// Counts the commands `held` that differ from the controller's `wanted`.
     fn count(&mut self, wanted: &[f64], held: &[f64]) {
         let mut any = false;
@@ -226,8 +232,7 @@ impl<C: Controller> Simulation<C> {
         let cycles = (duration / period).round() as u64;
         let (t0, rhs0, steps0) = (self.t, self.plant.rhs_count(), self.steps);
         let com0 = self.com()?;
-        self.limited.per_actuator.fill(0);
-        self.limited.cycles = 0;
+        self.limited.reset();
         let start = Instant::now();
         for k in 0..cycles {
             self.cycle(observer)?;
