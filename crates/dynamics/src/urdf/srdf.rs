@@ -133,7 +133,7 @@ fn joints<'a, 'i>(node: &roxmltree::Node<'a, 'i>) -> impl Iterator<Item = roxmlt
 /// One `<rotor_params>` joint entry.
 fn rotor(file: &str, j: &roxmltree::Node) -> Result<RotorParams, SrdfError> {
     let name = required(file, j, "rotor_params joint", "name")?;
-    let at = || locate(file, j, format!("rotor_params joint \"{name}\""));
+    let at = || locate(file, j, format!("rotor_params joint {name:?}"));
     let inertia = number(at, j, "mass")?;
     let gear_ratio = number(at, j, "gear_ratio")?;
     if inertia < 0.0 {
@@ -156,13 +156,7 @@ fn group_state(file: &str, node: &roxmltree::Node) -> Result<GroupState, SrdfErr
     let mut joints_out = Vec::new();
     for j in joints(node) {
         let joint = required(file, &j, "group_state joint", "name")?;
-        let at = || {
-            locate(
-                file,
-                &j,
-                format!("group_state \"{name}\" joint \"{joint}\""),
-            )
-        };
+        let at = || locate(file, &j, format!("group_state {name:?} joint {joint:?}"));
         let text = j
             .attribute("value")
             .ok_or_else(|| invalid(at(), "value", "missing"))?;
@@ -172,7 +166,7 @@ fn group_state(file: &str, node: &roxmltree::Node) -> Result<GroupState, SrdfErr
                 joints_out.push((joint.to_string(), v))
             }
             _ => {
-                let problem = format!("\"{text}\" is not a list of finite numbers");
+                let problem = format!("{text:?} is not a list of finite numbers");
                 return Err(invalid(at(), "value", &problem));
             }
         }
@@ -206,7 +200,7 @@ fn number(at: impl Fn() -> Location, node: &roxmltree::Node, attr: &str) -> Resu
         _ => Err(invalid(
             at(),
             attr,
-            &format!("\"{text}\" is not a finite number"),
+            &format!("{text:?} is not a finite number"),
         )),
     }
 }

@@ -23,7 +23,7 @@ impl Source<'_> {
         Location {
             file: self.file.to_string(),
             line: element_line(self.xml, tag, name),
-            element: format!("{tag} \"{name}\""),
+            element: format!("{tag} {name:?}"),
         }
     }
 
@@ -233,7 +233,7 @@ fn topology(robot: &Robot, src: &Source<'_>) -> Result<Topology, UrdfError> {
                     "joint",
                     &joint.name,
                     field,
-                    format!("no link named \"{link}\""),
+                    format!("no link named {link:?}"),
                 )
             })
         };
@@ -241,7 +241,7 @@ fn topology(robot: &Robot, src: &Source<'_>) -> Result<Topology, UrdfError> {
         let child = find("child link", &joint.child.link)?;
         if let Some(other) = parent_joint[child] {
             let problem = format!(
-                "link \"{}\" is already the child of joint \"{}\"",
+                "link {:?} is already the child of joint {:?}",
                 joint.child.link, robot.joints[other].name
             );
             return Err(src.invalid("joint", &joint.name, "child link", problem));
@@ -352,14 +352,11 @@ fn check_mimic(
         return Ok(());
     };
     if options.reject_mimic {
-        let problem = format!(
-            "mimics joint \"{}\"; mimic joints are rejected",
-            mimic.joint
-        );
+        let problem = format!("mimics joint {:?}; mimic joints are rejected", mimic.joint);
         return Err(src.invalid("joint", &joint.name, "mimic", problem));
     }
     warnings.push(format!(
-        "{}: <mimic joint=\"{}\"> ignored: the joint keeps its own independent coordinate",
+        "{}: <mimic joint={:?}> ignored: the joint keeps its own independent coordinate",
         src.at("joint", &joint.name),
         mimic.joint
     ));
