@@ -89,6 +89,10 @@ pub struct SimulateArgs {
     /// joint's inertia `m`, capped for the 1 kHz hold; default 40).
     #[arg(long, value_name = "RAD_S", allow_hyphen_values = true)]
     bandwidth: Option<String>,
+    /// No IMU damping through the ankles (by default the ankles also get torques from the
+    /// base's low-passed angular velocity, which damp the rocking on the soles).
+    #[arg(long)]
+    no_stance_damping: bool,
     /// Scenario: `stand`, `drop` or `sway`.
     #[arg(long, value_name = "NAME", default_value = "stand")]
     scenario: String,

@@ -105,6 +105,7 @@ impl Job {
         if let Some(text) = &a.bandwidth {
             options.bandwidth = positive("--bandwidth", text)?;
         }
+        options.stance_damping = !a.no_stance_damping;
         if let Some(text) = &a.sway {
             [options.sway_amplitude, options.sway_period] = sway_motion(text, kind)?;
         }

@@ -5,9 +5,11 @@
 
 mod cascade;
 mod pd;
+mod stance;
 
 pub use cascade::{Cascade, CurrentPi, InnerController};
 pub use pd::{JointPd, Trajectory};
+pub use stance::StanceDamping;
 
 use crate::drive::DriveMode;
 use crate::error::SimError;

@@ -8,6 +8,7 @@
 //! from its foot poses, drive and gear torques, the solve phase, `qdot` from `v`. Every buffer
 //! is allocated in [`Plant::new`].
 
+mod ankles;
 mod armature;
 mod build;
 mod energy;
@@ -16,6 +17,7 @@ mod inertia;
 pub mod kinematics;
 pub mod layout;
 
+pub use ankles::AnkleAxis;
 pub use armature::Armature;
 pub use build::{lola_plant, urdf_plant, LolaPlant, UrdfFeet, URDF_GEAR_RATIO};
 pub use energy::Energy;

@@ -66,6 +66,9 @@ pub struct ScenarioOptions {
     pub sway_amplitude: f64,
     /// Sway period \[s] (default 2).
     pub sway_period: f64,
+    /// IMU damping through the ankles ([`JointPd::with_stance_damping`], gyroscope low-passed
+    /// at the bandwidth; default on).
+    pub stance_damping: bool,
 }
 
 impl Default for ScenarioOptions {
@@ -80,6 +83,7 @@ impl Default for ScenarioOptions {
             sway_joints: None,
             sway_amplitude: 0.06,
             sway_period: 2.0,
+            stance_damping: true,
         }
     }
 }
@@ -128,6 +132,9 @@ pub fn build(
     pose::place_on_ground(plant, &mut q0, lift)?;
     let z0 = plant.initial_state(&q0, &DVector::zeros(plant.layout().nv))?;
     let mut controller = JointPd::scaled(plant, &q0, o.period, o.bandwidth, o.damping)?;
+    if o.stance_damping {
+        controller = controller.with_stance_damping(plant, &q0, o.bandwidth)?;
+    }
     let base = pose::base_height(plant, &q0);
     let (duration, criteria) = match kind {
         ScenarioKind::Drop => (4.0, Criteria::drop(base)),
