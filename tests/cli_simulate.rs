@@ -683,3 +683,24 @@ fn urdf_limits_and_joint_damping() {
         Some(0)
     );
 }
+
+/// The IMU damping through the ankles is on by default and reported; `--no-stance-damping`
+/// turns it off (no report line, other commands).
+#[test]
+fn stance_damping_is_reported_and_can_be_turned_off() {
+    let base = ["--lola", "type2", "--duration", "0.05"];
+    let (on, dir_on) = simulate("stance_on", &base);
+    let mut args = base.to_vec();
+    args.push("--no-stance-damping");
+    let (off, dir_off) = simulate("stance_off", &args);
+    let text = |o: &Output| String::from_utf8_lossy(&o.stdout).to_string();
+    assert!(
+        text(&on).contains("stance damping: 4 ankles, gain "),
+        "{}",
+        text(&on)
+    );
+    assert!(!text(&off).contains("stance damping"), "{}", text(&off));
+    let ankle = |dir: &Path| column(&csv(dir), "cmd[l_foot]");
+    assert_ne!(ankle(&dir_on), ankle(&dir_off));
+    let _ = (summary(&on, &dir_on), summary(&off, &dir_off));
+}

@@ -2,6 +2,7 @@
 //! stdout.
 
 use super::setup::{Info, StepRule};
+use biped_sim::controller::StanceDamping;
 use biped_sim::plant::Plant;
 use biped_sim::record::Recorder;
 use biped_sim::simulation::Summary;
@@ -47,12 +48,33 @@ pub fn final_base_height(rec: &Recorder, plant: &Plant) -> Option<f64> {
     rec.column(&format!("q[{}]", qi + 2)).ok()?.last().copied()
 }
 
+/// The IMU damping through the ankles in one line: how many ankles, gain and cutoff ranges.
+fn stance_line(d: &StanceDamping) -> String {
+    let range = |f: fn(&biped_sim::controller::StanceAnkle) -> f64| {
+        let it = d.ankles().iter().map(f);
+        let lo = it.clone().fold(f64::INFINITY, f64::min);
+        let hi = it.fold(f64::NEG_INFINITY, f64::max);
+        if lo == hi {
+            format!("{lo:.3e}")
+        } else {
+            format!("{lo:.3e}-{hi:.3e}")
+        }
+    };
+    format!(
+        "stance damping: {} ankles, gain {} N m s/rad, gyroscope low-pass {} rad/s",
+        d.ankles().len(),
+        range(|a| a.gain),
+        range(|a| a.cutoff)
+    )
+}
+
 /// Text report on stdout: what ran, how fast, the checks, where the files are.
 pub fn print_report(
     s: &Summary,
     plant: &Plant,
     rec: &Recorder,
     info: &Info,
+    stance: Option<&StanceDamping>,
     dir: &Path,
     files: &[String],
 ) {
@@ -84,6 +106,9 @@ pub fn print_report(
             "  joint layer: {} end stops, {} damping/friction laws (fastest: {} of `{}`, {:.3e} 1/s)",
             p.end_stops, p.friction_laws, f.law, f.joint, f.rate
         );
+    }
+    if let Some(d) = stance {
+        println!("  {}", stance_line(d));
     }
     if let Some(m) = &s.drive_limits.most {
         println!(

@@ -9,7 +9,7 @@ mod stance;
 
 pub use cascade::{Cascade, CurrentPi, InnerController};
 pub use pd::{JointPd, Trajectory};
-pub use stance::StanceDamping;
+pub use stance::{StanceAnkle, StanceDamping};
 
 use crate::drive::DriveMode;
 use crate::error::SimError;

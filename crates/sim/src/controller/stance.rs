@@ -21,15 +21,20 @@ use nalgebra::Vector3;
 /// from `c_l` ~ 1.8e3 N m s/rad on; filtered at 20-80 rad/s, 6e3 damp the rocking.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StanceDamping {
-    ankles: Vec<Ankle>,
+    ankles: Vec<StanceAnkle>,
 }
 
-/// One damped ankle.
+/// One damped ankle of [`StanceDamping`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Ankle {
-    actuator: usize,
-    /// `c_l a_l`.
-    gain_axis: Vector3<f64>,
+pub struct StanceAnkle {
+    /// Actuator index (plant order).
+    pub actuator: usize,
+    /// Gain `c_l` \[N m s/rad].
+    pub gain: f64,
+    /// Horizontal axis `a_l` in the base frame.
+    pub axis: Vector3<f64>,
+    /// Low-pass cutoff `w_l` \[rad/s].
+    pub cutoff: f64,
     /// Filter factor `1 - exp(-w_l T)` per control period `T`.
     alpha: f64,
     /// Filter state `omega_l`.
@@ -55,9 +60,11 @@ impl StanceDamping {
             positive("stance damping gain", c, true)?;
             positive("stance damping cutoff", cutoff, false)?;
             if c > 0.0 {
-                out.push(Ankle {
+                out.push(StanceAnkle {
                     actuator: a.actuator,
-                    gain_axis: c * a.axis,
+                    gain: c,
+                    axis: a.axis,
+                    cutoff,
                     alpha: -(-cutoff * period).exp_m1(),
                     filtered: Vector3::zeros(),
                 });
@@ -66,11 +73,9 @@ impl StanceDamping {
         Ok((!out.is_empty()).then_some(Self { ankles: out }))
     }
 
-    /// `(actuator, c_l a_l, 1 - exp(-w_l T))` of every damped ankle.
-    pub fn ankles(&self) -> impl Iterator<Item = (usize, Vector3<f64>, f64)> + '_ {
-        self.ankles
-            .iter()
-            .map(|a| (a.actuator, a.gain_axis, a.alpha))
+    /// The damped ankles.
+    pub fn ankles(&self) -> &[StanceAnkle] {
+        &self.ankles
     }
 
     /// Filters the gyroscope reading `omega` (base frame) and adds the ankle torques to `tau`
@@ -78,7 +83,7 @@ impl StanceDamping {
     pub fn add_to(&mut self, omega: &Vector3<f64>, tau: &mut [f64]) {
         for a in &mut self.ankles {
             a.filtered += a.alpha * (omega - a.filtered);
-            tau[a.actuator] += a.gain_axis.dot(&a.filtered);
+            tau[a.actuator] += a.gain * a.axis.dot(&a.filtered);
         }
     }
 }
