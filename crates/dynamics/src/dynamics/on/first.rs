@@ -49,7 +49,7 @@ pub(super) fn dynamic_first_pass(
         if rc.is_none() {
             *fbar = force_of(&body.inertia, g, &vel.ang, fext, i);
             if let Some(init) = init {
-                *mbar = *init;
+                mbar.set_from(init);
             }
         }
     }

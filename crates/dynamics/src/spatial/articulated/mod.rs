@@ -44,6 +44,15 @@ impl ArticulatedInertia {
         }
     }
 
+    /// `self = o` block by block: the whole-struct copy (216 bytes) compiled to a `memcpy`
+    /// call per body in the O(n) first pass; three 72-byte copies stay inline.
+    #[inline(always)]
+    pub(crate) fn set_from(&mut self, o: &Self) {
+        self.ang = o.ang;
+        self.cross = o.cross;
+        self.lin = o.lin;
+    }
+
     /// `I m` for a motion vector.
     #[inline]
     pub fn apply(&self, m: &Motion) -> Force {
