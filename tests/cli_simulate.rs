@@ -204,6 +204,42 @@ fn default_stand_meets_its_pass_criteria() {
     let s = summary(&out, &dir);
     assert_eq!(num(&s, "sim_time"), 3.0);
     assert_eq!(s["passed"], true, "{}", s["checks"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        !text.contains("hint:") && !text.contains("fastest `"),
+        "{text}"
+    );
+}
+
+/// The rotor-less G1 does not come to rest (its ankle roll moves ~1e-4 kg m^2, so the 1 kHz
+/// hold caps its gains): the failed rest check names the fastest joint, `summary.json` has
+/// it, and a hint line gives the capped gains and points at `--armature`.
+#[test]
+fn failed_rest_check_names_the_joint_and_the_capped_gains() {
+    let (out, dir) = simulate_g1("g1_no_rotors", &["--duration", "1", "--check"]);
+    assert!(!out.status.success(), "stand --check fails without rotors");
+    let text = String::from_utf8_lossy(&out.stdout);
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).expect("file"))
+            .expect("JSON");
+    let joint = s["final_fastest"]
+        .as_str()
+        .expect("fastest coordinate named");
+    assert!(joint.ends_with("_joint"), "an actuated joint: {joint}");
+    let failed = "FAILED: final max |v| below";
+    let line = text
+        .lines()
+        .find(|l| l.contains(failed))
+        .expect("rest check");
+    assert!(line.ends_with(&format!(", fastest `{joint}`")), "{line}");
+    let hint = text
+        .lines()
+        .find(|l| l.contains("hint:"))
+        .expect("hint line");
+    assert!(
+        hint.contains(&format!("caps `{joint}`'s gains at k_p ")) && hint.contains("--armature"),
+        "{hint}"
+    );
 }
 
 #[test]

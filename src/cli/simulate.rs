@@ -168,8 +168,8 @@ pub fn run(args: SimulateArgs) -> CliResult {
     };
     let plant = sim.plant();
     let files = output::write_all(&rec, plant, &summary, &info, &chosen, &out_dir)?;
-    let stance = sim.controller().stance_damping();
-    report::print_report(&summary, plant, &rec, &info, stance, &out_dir, &files);
+    let pd = sim.controller();
+    report::print_report(&summary, plant, &rec, &info, pd, &out_dir, &files);
     let failed = args.check && !summary.passed();
     Ok(if failed {
         ExitCode::FAILURE

@@ -2,9 +2,10 @@
 //! stdout.
 
 use super::setup::{Info, StepRule};
-use biped_sim::controller::StanceDamping;
+use biped_sim::controller::{Controller, JointPd, StanceDamping};
 use biped_sim::plant::Plant;
 use biped_sim::record::Recorder;
+use biped_sim::scenario::REST_CHECK;
 use biped_sim::simulation::Summary;
 use serde_json::{json, Value};
 use std::path::Path;
@@ -68,13 +69,32 @@ fn stance_line(d: &StanceDamping) -> String {
     )
 }
 
+/// For a failed rest check whose fastest coordinate is an actuated joint that the zero-order
+/// hold left with under half the damping its bandwidth asks for (a light subtree, typically a
+/// URDF joint without its motor's rotor inertia): its capped gains and what to add.
+fn rest_hint(s: &Summary, plant: &Plant, pd: &JointPd) -> Option<String> {
+    let failed = s.checks.iter().any(|c| c.name == REST_CHECK && !c.passed);
+    let joint = s.final_fastest.as_deref().filter(|_| failed)?;
+    let k = plant.actuators().iter().position(|a| a.name == joint)?;
+    let (kd, want) = (pd.kd()[k], pd.kd_wanted().nth(k)?);
+    let kp = pd.kp()[k];
+    (kd < 0.5 * want).then(|| {
+        format!(
+            "the {:.0} Hz hold caps `{joint}`'s gains at k_p {kp:.2e} N m/rad, k_d {kd:.2e} \
+             N m s/rad (its bandwidth asks for k_d {want:.2e}): a joint that moves this little \
+             inertia needs its motor's rotor inertia (--armature) to be held",
+            1.0 / pd.period()
+        )
+    })
+}
+
 /// Text report on stdout: what ran, how fast, the checks, where the files are.
 pub fn print_report(
     s: &Summary,
     plant: &Plant,
     rec: &Recorder,
     info: &Info,
-    stance: Option<&StanceDamping>,
+    pd: &JointPd,
     dir: &Path,
     files: &[String],
 ) {
@@ -107,7 +127,7 @@ pub fn print_report(
             p.end_stops, p.friction_laws, f.law, f.joint, f.rate
         );
     }
-    if let Some(d) = stance {
+    if let Some(d) = pd.stance_damping() {
         println!("  {}", stance_line(d));
     }
     if let Some(m) = &s.drive_limits.most {
@@ -118,10 +138,17 @@ pub fn print_report(
     }
     for c in &s.checks {
         let verdict = if c.passed { "ok" } else { "FAILED" };
+        let at = match (&s.final_fastest, c.name == REST_CHECK && !c.passed) {
+            (Some(j), true) => format!(", fastest `{j}`"),
+            _ => String::new(),
+        };
         println!(
-            "  {verdict:>6}: {} {:.3e} (limit {:.3e})",
+            "  {verdict:>6}: {} {:.3e} (limit {:.3e}){at}",
             c.name, c.value, c.limit
         );
+    }
+    if let Some(h) = rest_hint(s, plant, pd) {
+        println!("  hint: {h}");
     }
     let failed = s.checks.iter().filter(|c| !c.passed).count();
     match failed {

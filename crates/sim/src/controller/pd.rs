@@ -223,6 +223,12 @@ impl JointPd {
     pub fn kd(&self) -> &[f64] {
         &self.kd
     }
+
+    /// The derivative gains the bandwidth asked for before the zero-order-hold cap of
+    /// [`Self::scaled`] (equal to [`Self::kd`] where nothing was capped).
+    pub fn kd_wanted(&self) -> impl Iterator<Item = f64> + '_ {
+        self.uncapped.iter().map(|&(want, _)| want)
+    }
 }
 
 impl Controller for JointPd {

@@ -32,6 +32,9 @@ impl Tracker {
     }
 }
 
+/// Name of the rest check ([`Criteria::rest_speed`]) in [`Summary::checks`].
+pub const REST_CHECK: &str = "final max |v| below";
+
 /// Thresholds; `None` = not checked.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Criteria {
@@ -87,12 +90,7 @@ impl Criteria {
             });
         };
         if let Some(l) = self.rest_speed {
-            push(
-                "final max |v| below",
-                s.final_max_speed,
-                l,
-                s.final_max_speed < l,
-            );
+            push(REST_CHECK, s.final_max_speed, l, s.final_max_speed < l);
         }
         if let Some(l) = self.force_balance {
             let e = (s.final_contact_force - s.weight).abs() / s.weight;

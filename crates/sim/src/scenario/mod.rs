@@ -11,7 +11,7 @@
 mod criteria;
 mod pose;
 
-pub use criteria::{Criteria, Tracker};
+pub use criteria::{Criteria, Tracker, REST_CHECK};
 pub use pose::{lola_pose, lola_sway_joints, SwayJoints};
 
 use crate::controller::{Controller, JointPd};

@@ -59,6 +59,9 @@ pub struct Summary {
     /// Largest `|v_i|` at the end over the link coordinates (base and joints; Type 3 motor
     /// coordinates, which turn `N` times faster, excluded).
     pub final_max_speed: f64,
+    /// The link coordinate of [`Self::final_max_speed`]: its joint's name, with `[k]` for
+    /// the `k`-th velocity of a multi-DoF joint (`root[3]` = a free base's x angular rate).
+    pub final_fastest: Option<String>,
     /// Largest joint speed of the actuated joints at the end \[rad/s].
     pub final_max_joint_speed: f64,
     /// The plant's passive joint layer (end stops, joint friction).
@@ -129,12 +132,26 @@ impl PassiveSummary {
 }
 
 /// Largest `|v_i|` over the non-motor coordinates.
-fn link_speed(plant: &crate::plant::Plant, v: &[f64]) -> f64 {
+fn link_speed(plant: &crate::plant::Plant, v: &[f64]) -> (f64, Option<usize>) {
     let motor = |i: usize| plant.gears().iter().any(|g| g.motor_v == i);
     v.iter()
         .enumerate()
         .filter(|(i, _)| !motor(*i))
-        .fold(0.0f64, |m, (_, x)| m.max(x.abs()))
+        .fold((0.0f64, None), |(m, at), (i, x)| match x.abs() > m {
+            true => (x.abs(), Some(i)),
+            false => (m, at),
+        })
+}
+
+/// Name of velocity coordinate `i`: the joint owning it, `[k]` added for multi-DoF joints.
+pub(crate) fn coordinate_name(model: &biped_dynamics::Model, i: usize) -> Option<String> {
+    let body = model.bodies().iter().find(|b| {
+        b.owns_coordinates() && (b.v_index()..b.v_index() + b.joint().nv()).contains(&i)
+    })?;
+    Some(match body.joint().nv() {
+        1 => body.joint_name().to_string(),
+        _ => format!("{}[{}]", body.joint_name(), i - body.v_index()),
+    })
 }
 
 impl Summary {
@@ -155,6 +172,7 @@ impl Summary {
             .sum();
         let sim_time = sim.t - t0;
         let abs_max = |x: &[f64]| x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let fastest = link_speed(plant, &sim.z[l.v()]);
         Self {
             method: sim.method().name().to_string(),
             drive_mode: plant.mode(),
@@ -183,7 +201,8 @@ impl Summary {
                 .iter()
                 .map(|f| f.force.z)
                 .sum(),
-            final_max_speed: link_speed(plant, &sim.z[l.v()]),
+            final_max_speed: fastest.0,
+            final_fastest: fastest.1.and_then(|i| coordinate_name(plant.model(), i)),
             final_max_joint_speed: abs_max(&sim.sensors.joint_velocities),
             passive: PassiveSummary::of(plant.passive()),
             checks: Vec::new(),
@@ -193,5 +212,39 @@ impl Summary {
     /// True if every check passed.
     pub fn passed(&self) -> bool {
         self.checks.iter().all(|c| c.passed)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::coordinate_name;
+    use biped_dynamics::{BodySpec, JointModel, ModelBuilder, RigidInertia};
+    use nalgebra::{Isometry3, Matrix3, Vector3};
+
+    /// Free base `root` (6 velocities) carrying a revolute `hip`: names by velocity index.
+    #[test]
+    fn coordinates_are_named_by_their_joint() {
+        let inertia = RigidInertia::new(1.0, Vector3::zeros(), Matrix3::identity()).expect("I");
+        let mut b = ModelBuilder::new();
+        let spec = |name: &str, parent, joint| BodySpec {
+            name: name.into(),
+            joint_name: name.into(),
+            parent,
+            joint,
+            placement: Isometry3::identity(),
+            inertia,
+        };
+        let root = b
+            .add_body(spec("root", None, JointModel::FreeQuaternion))
+            .expect("root");
+        let axis = Vector3::y_axis();
+        b.add_body(spec("hip", Some(root), JointModel::Revolute { axis }))
+            .expect("hip");
+        let model = b.build().expect("model");
+        let names: Vec<_> = (0..8).map(|i| coordinate_name(&model, i)).collect();
+        let want: Vec<_> = (0..6).map(|k| Some(format!("root[{k}]"))).collect();
+        assert_eq!(names[..6], want[..]);
+        assert_eq!(names[6].as_deref(), Some("hip"));
+        assert_eq!(names[7], None, "past the last coordinate");
     }
 }
