@@ -69,11 +69,13 @@ fn stance_line(d: &StanceDamping) -> String {
     )
 }
 
-/// For a failed rest check whose fastest coordinate is an actuated joint that the zero-order
-/// hold left with under half the damping its bandwidth asks for (a light subtree, typically a
-/// URDF joint without its motor's rotor inertia): its capped gains and what to add.
+/// For a failed rest check on a model without rotors whose fastest coordinate is an actuated
+/// joint that the zero-order hold left with under half the damping its bandwidth asks for (a
+/// light subtree, typically a URDF joint without its motor's rotor inertia): its capped gains
+/// and what to add.
 fn rest_hint(s: &Summary, plant: &Plant, pd: &JointPd) -> Option<String> {
-    let failed = s.checks.iter().any(|c| c.name == REST_CHECK && !c.passed);
+    let failed =
+        !plant.model().has_rotors() && s.checks.iter().any(|c| c.name == REST_CHECK && !c.passed);
     let joint = s.final_fastest.as_deref().filter(|_| failed)?;
     let k = plant.actuators().iter().position(|a| a.name == joint)?;
     let (kd, want) = (pd.kd()[k], pd.kd_wanted().nth(k)?);
