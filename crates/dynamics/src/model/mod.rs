@@ -233,7 +233,8 @@ impl Model {
     pub fn dof_parents(&self) -> &[Option<usize>] {
         &self.dof_parent
     }
-    /// Whether some body is a geared rotor (shares its driver's coordinate).
+    /// Whether some body shares its driver's coordinates instead of owning its own: a geared
+    /// or Harmonic Drive rotor, or a coupled part of a closed-form mechanism.
     pub fn has_rotors(&self) -> bool {
         self.has_rotors
     }
