@@ -145,12 +145,10 @@ fn link_speed(plant: &crate::plant::Plant, v: &[f64]) -> (f64, Option<usize>) {
 
 /// Name of velocity coordinate `i`: the joint owning it, `[k]` added for multi-DoF joints.
 pub(crate) fn coordinate_name(model: &biped_dynamics::Model, i: usize) -> Option<String> {
-    let body = model.bodies().iter().find(|b| {
-        b.owns_coordinates() && (b.v_index()..b.v_index() + b.joint().nv()).contains(&i)
-    })?;
-    Some(match body.joint().nv() {
-        1 => body.joint_name().to_string(),
-        _ => format!("{}[{}]", body.joint_name(), i - body.v_index()),
+    let j = (model.joints().iter()).find(|j| (j.v_index..j.v_index + j.nv).contains(&i))?;
+    Some(match j.nv {
+        1 => j.name.clone(),
+        _ => format!("{}[{}]", j.name, i - j.v_index),
     })
 }
 
