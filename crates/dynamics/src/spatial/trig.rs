@@ -11,25 +11,39 @@ const PIO2_MID: f64 = 6.077_100_506_303_966e-11;
 const PIO2_LO: f64 = 2.022_266_248_795_950_6e-21;
 /// Largest `|x|` reduced here (quadrant count far below `2^20`).
 const REDUCTION_LIMIT: f64 = 1.0e5;
+/// `1.5 * 2^52`: adding it to a double below `2^51` in magnitude rounds that to an integer
+/// (ties to even) held in the low bits of the sum's mantissa (two's complement).
+const SHIFTER: f64 = 6_755_399_441_055_744.0;
+/// Per quadrant `k mod 4`: the mask that swaps sine and cosine (odd quadrants) and the sign
+/// bits of the result, 0: `(s, c)`, 1: `(c, -s)`, 2: `(-s, -c)`, 3: `(-c, s)`.
+const QUADRANT_BITS: [(u64, [u64; 2]); 4] = [
+    (0, [0, 0]),
+    (!0, [0, 1 << 63]),
+    (0, [1 << 63, 1 << 63]),
+    (!0, [1 << 63, 0]),
+];
 
 /// `(sin x, cos x)`, see the module doc.
 #[inline]
 pub fn sin_cos(x: f64) -> (f64, f64) {
-    if x.is_nan() || x.abs() > REDUCTION_LIMIT {
+    // Negated `<=` so that NaN takes the library path too (one comparison).
+    if !(x.abs() <= REDUCTION_LIMIT) {
         return x.sin_cos();
     }
-    let k = (x * std::f64::consts::FRAC_2_PI).round();
+    // Rounding by the shifter (no saturating float-to-integer conversion): `k` is `x 2/pi`
+    // rounded to an integer, its low bits are those of `t`'s mantissa.
+    let t = x * std::f64::consts::FRAC_2_PI + SHIFTER;
+    let k = t - SHIFTER;
     let r = ((x - k * PIO2_HI) - k * PIO2_MID) - k * PIO2_LO;
     let (s, c) = kernel(r);
-    // Quadrant 0: (s, c), 1: (c, -s), 2: (-s, -c), 3: (-c, s), by selects and sign-bit flips
-    // (bit-identical to negation) instead of a jump table.
-    let quadrant = k as i64 as u64;
-    let (a, b) = if quadrant & 1 == 0 { (s, c) } else { (c, s) };
-    let sin_sign = (quadrant & 2) << 62;
-    let cos_sign = (quadrant.wrapping_add(1) & 2) << 62;
+    // Swap (by XOR with the masked difference) and sign-bit flips (bit-identical to
+    // negation) from a table instead of a jump table.
+    let (swap, [sin_sign, cos_sign]) = QUADRANT_BITS[(t.to_bits() & 3) as usize];
+    let (s, c) = (s.to_bits(), c.to_bits());
+    let d = (s ^ c) & swap;
     (
-        f64::from_bits(a.to_bits() ^ sin_sign),
-        f64::from_bits(b.to_bits() ^ cos_sign),
+        f64::from_bits(s ^ d ^ sin_sign),
+        f64::from_bits(c ^ d ^ cos_sign),
     )
 }
 
