@@ -5,7 +5,7 @@
 //! dropped. Same results as the general step ([`super::step`]) up to the sign of zeros.
 
 use crate::spatial::{sin_cos, JointAxis, Motion, SpatialTransform};
-use crate::{Data, Model};
+use crate::Data;
 use nalgebra::{Matrix3, Vector3};
 
 /// `A v` for `A = Rot_K(angle)^T` given by `(s, c)` (only the plane normal to `e_K` mixes).
@@ -18,39 +18,49 @@ fn rot_mul<const K: usize>(s: f64, c: f64, v: &Vector3<f64>) -> Vector3<f64> {
     out
 }
 
-/// `C_i`, world pose, `g_i`, `v_i` (2.33) and `b_i` (2.37) of body `i` with parent `p`, joint
-/// axis `ax` (angular, about `e_K`) at coordinate `q` and rate `qd`.
+/// `(&v[p], &mut v[i])` for a parent `p < i` of body `i`: one bounds check (`i`) where
+/// indexing twice checks both, and no reload of `v`'s pointer after the other stores.
 #[inline(always)]
+fn parent_child<T>(v: &mut [T], p: usize, i: usize) -> (&T, &mut T) {
+    let (head, tail) = v[..=i].split_at_mut(i);
+    (&head[p], &mut tail[0])
+}
+
+/// `C_i`, world pose, `g_i`, `v_i` (2.33) and `b_i` (2.37) of body `i` with parent `p < i`,
+/// placement translation `trans`, joint axis `ax` (angular, about `e_K`) at coordinate `q`
+/// and rate `qd`.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
 pub(super) fn plane_revolute_step<const K: usize>(
-    model: &Model,
     data: &mut Data,
     i: usize,
     p: usize,
+    trans: &Vector3<f64>,
     ax: &JointAxis,
     q: f64,
     qd: f64,
 ) {
     let (a, b) = ((K + 1) % 3, (K + 2) % 3);
     let (s, c) = sin_cos(q * ax.scale);
-    let trans = model.bodies[i].placement_x.trans;
     // World rotation `W_p A^T`: columns a and b mix, column K is the parent's.
-    let wp = &data.world_rot[p];
+    let (wp, w_rot) = parent_child(&mut data.world_rot, p, i);
+    let (pos_p, pos) = parent_child(&mut data.world_pos, p, i);
+    *pos = pos_p + *wp * trans;
     let (ca, cb) = (wp.column(a).into_owned(), wp.column(b).into_owned());
-    let mut w_rot = *wp;
+    *w_rot = *wp;
     w_rot.set_column(a, &(ca * c + cb * s));
     w_rot.set_column(b, &(cb * c - ca * s));
-    data.world_pos[i] = data.world_pos[p] + wp * trans;
-    data.world_rot[i] = w_rot;
-    data.gravity_body[i] = rot_mul::<K>(s, c, &data.gravity_body[p]);
+    let (gp, g) = parent_child(&mut data.gravity_body, p, i);
+    *g = rot_mul::<K>(s, c, gp);
     // C v_p = [A w_p; A v_p + (A w_p) x (A r)], plus J qd = omega e_K.
-    let vp = data.vel[p];
+    let (vp, vel) = parent_child(&mut data.vel, p, i);
     let w = rot_mul::<K>(s, c, &vp.ang);
-    let rk = rot_mul::<K>(s, c, &trans);
+    let rk = rot_mul::<K>(s, c, trans);
     let lin = rot_mul::<K>(s, c, &vp.lin) + w.cross(&rk);
     let omega = ax.scale * qd;
     let mut ang = w;
     ang[K] += omega;
-    data.vel[i] = Motion::new(ang, lin);
+    *vel = Motion::new(ang, lin);
     // b = [w x (omega e_K); w x (w x r)] (2.37) with `Jdot qd = 0`, no relative linear motion.
     let mut bias_ang = Vector3::zeros();
     bias_ang[a] = w[b] * omega;
@@ -61,24 +71,25 @@ pub(super) fn plane_revolute_step<const K: usize>(
     rot[(a, b)] = s;
     rot[(b, a)] = -s;
     rot[(b, b)] = c;
-    data.x[i] = SpatialTransform::new(rot, trans);
+    data.x[i] = SpatialTransform::new(rot, *trans);
 }
 
-/// `C_i`, world pose, `g_i`, `v_i` (2.33) and `b_i` (2.37) of a fixed-joint body `i` whose
-/// placement is a pure translation (`A_kp = 1`): the general step with the identity products
-/// dropped, `v_i = [w_p; v_p + w_p x r]`, `b_i = [0; w_p x (w_p x r)]`.
+/// `C_i`, world pose, `g_i`, `v_i` (2.33) and `b_i` (2.37) of a fixed-joint body `i` (parent
+/// `p < i`) whose placement `pl` is a pure translation (`A_kp = 1`): the general step with
+/// the identity products dropped, `v_i = [w_p; v_p + w_p x r]`, `b_i = [0; w_p x (w_p x r)]`.
 #[inline(always)]
-pub(super) fn translation_step(model: &Model, data: &mut Data, i: usize, p: usize) {
-    let pl = model.bodies[i].placement_x;
-    let wp = data.world_rot[p];
-    data.world_pos[i] = data.world_pos[p] + wp * pl.trans;
-    data.world_rot[i] = wp;
-    data.gravity_body[i] = data.gravity_body[p];
-    let vp = data.vel[p];
+pub(super) fn translation_step(data: &mut Data, i: usize, p: usize, pl: &SpatialTransform) {
+    let (wp, w_rot) = parent_child(&mut data.world_rot, p, i);
+    let (pos_p, pos) = parent_child(&mut data.world_pos, p, i);
+    *pos = pos_p + *wp * pl.trans;
+    *w_rot = *wp;
+    let (gp, g) = parent_child(&mut data.gravity_body, p, i);
+    *g = *gp;
+    let (vp, vel) = parent_child(&mut data.vel, p, i);
     let wr = vp.ang.cross(&pl.trans);
-    data.vel[i] = Motion::new(vp.ang, vp.lin + wr);
     data.bias_acc[i] = Motion::new(Vector3::zeros(), vp.ang.cross(&wr));
-    data.x[i] = pl;
+    *vel = Motion::new(vp.ang, vp.lin + wr);
+    data.x[i] = *pl;
 }
 
 #[cfg(test)]

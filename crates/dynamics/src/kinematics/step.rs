@@ -33,18 +33,18 @@ pub(crate) fn body_step(model: &Model, data: &mut Data, i: usize, q: &[f64], v: 
         (data.plane_axis[i], body.parent, v, &body.joint)
     {
         if ax.kind == SubspaceKind::Angular && p < i {
-            let (qi, qd) = (q[body.q_index], v[body.v_index]);
+            let (qi, qd, r) = (q[body.q_index], v[body.v_index], &body.placement_x.trans);
             match k {
-                0 => plane_revolute_step::<0>(model, data, i, p, ax, qi, qd),
-                1 => plane_revolute_step::<1>(model, data, i, p, ax, qi, qd),
-                _ => plane_revolute_step::<2>(model, data, i, p, ax, qi, qd),
+                0 => plane_revolute_step::<0>(data, i, p, r, ax, qi, qd),
+                1 => plane_revolute_step::<1>(data, i, p, r, ax, qi, qd),
+                _ => plane_revolute_step::<2>(data, i, p, r, ax, qi, qd),
             }
             return;
         }
     }
     if let (Joint::Fixed, Some(p), Some(_)) = (&body.joint, body.parent, v) {
         if p < i && body.placement_x.rot == Matrix3::identity() {
-            translation_step(model, data, i, p);
+            translation_step(data, i, p, &body.placement_x);
             return;
         }
     }
