@@ -43,8 +43,8 @@ pub fn forward_kinematics(
     check::vector("v", v, model.nv())?;
     check::vector("a", a, model.nv())?;
     let (q, v) = (q.as_slice(), v.as_slice());
-    for i in 0..model.nbodies() {
-        body_step(model, data, i, q, Some(v));
+    for body in model.bodies.iter().enumerate() {
+        body_step(model, data, body, q, Some(v));
     }
     take_fault(data)?;
     propagate_accelerations(model, data, Some(a));
@@ -59,8 +59,8 @@ pub fn update_placements(
 ) -> Result<(), DynamicsError> {
     check::data(model, data)?;
     check::configuration(model, q)?;
-    for i in 0..model.nbodies() {
-        body_step(model, data, i, q.as_slice(), None);
+    for body in model.bodies.iter().enumerate() {
+        body_step(model, data, body, q.as_slice(), None);
     }
     take_fault(data)
 }
@@ -98,8 +98,8 @@ pub(crate) fn first_forward(
     fext: Option<&[Wrench]>,
 ) {
     let (q, v) = (q.as_slice(), v.as_slice());
-    for i in 0..model.nbodies() {
-        body_step(model, data, i, q, Some(v));
+    for (i, body) in model.bodies.iter().enumerate() {
+        body_step(model, data, (i, body), q, Some(v));
         body_force(model, data, i, fext);
     }
 }
@@ -120,13 +120,17 @@ pub(crate) fn first_forward_kinematics(
     data.fd_q.as_mut_slice().copy_from_slice(q.as_slice());
     data.fd_v.as_mut_slice().copy_from_slice(v.as_slice());
     let (q, v) = (q.as_slice(), v.as_slice());
-    for i in 0..model.nbodies() {
-        match data.axial_member[i].as_ref().map(|rc| rc.kind) {
-            None => body_step(model, data, i, q, Some(v)),
+    // Taken out of `data` for the loop (no step reads it) and put back: iterated beside the
+    // bodies without bounds checks while the steps borrow `data`.
+    let members = std::mem::take(&mut data.axial_member);
+    for (i, (body, member)) in model.bodies.iter().zip(&members).enumerate() {
+        match member.as_ref().map(|rc| rc.kind) {
+            None => body_step(model, data, (i, body), q, Some(v)),
             Some(AxialKind::Geared) => {}
-            Some(_) => coupled::axial_motion(&model.bodies[i], data, i, q, v),
+            Some(_) => coupled::axial_motion(body, data, i, q, v),
         }
     }
+    data.axial_member = members;
 }
 
 /// Kinematics of the rotors skipped by [`first_forward_kinematics`], from its stored `q, v`.
@@ -135,9 +139,9 @@ pub(crate) fn complete_rotor_kinematics(model: &Model, data: &mut Data) {
         std::mem::take(&mut data.fd_q),
         std::mem::take(&mut data.fd_v),
     );
-    for i in 0..model.nbodies() {
+    for (i, body) in model.bodies.iter().enumerate() {
         if data.axial_member[i].is_some() {
-            body_step(model, data, i, q.as_slice(), Some(v.as_slice()));
+            body_step(model, data, (i, body), q.as_slice(), Some(v.as_slice()));
         }
     }
     (data.fd_q, data.fd_v) = (q, v);

@@ -4,6 +4,7 @@
 use super::joint::joint_kinematics;
 use super::plane::{plane_revolute_step, translation_step};
 use crate::model::joint::Joint;
+use crate::model::Body;
 use crate::spatial::plane::{General, Plane, RotationOps};
 use crate::spatial::{Force, Motion, RigidInertia, SpatialTransform, SubspaceKind, Wrench};
 use crate::{Data, Model};
@@ -19,16 +20,23 @@ pub(crate) fn body_kinematics(
     q: &DVector<f64>,
     v: Option<&DVector<f64>>,
 ) {
-    body_step(model, data, i, q.as_slice(), v.map(|v| v.as_slice()));
+    let body = (i, &model.bodies[i]);
+    body_step(model, data, body, q.as_slice(), v.map(|v| v.as_slice()));
 }
 
-/// [`body_kinematics`] on coordinate slices (taken once per pass by the callers). Revolute
+/// [`body_kinematics`] of body `(i, model.bodies[i])` on coordinate slices (both taken once
+/// per pass by the callers, which iterate over the bodies without bounds checks). Revolute
 /// joints about a coordinate axis of an unrotated placement take the written-out path of
 /// [`super::plane`], fixed joints with a translation-only placement its translation step (inlined into the passes; `p < i`, true for every model, lets the
 /// compiler drop bounds checks on the parent's entries).
 #[inline(always)]
-pub(crate) fn body_step(model: &Model, data: &mut Data, i: usize, q: &[f64], v: Option<&[f64]>) {
-    let body = &model.bodies[i];
+pub(crate) fn body_step(
+    model: &Model,
+    data: &mut Data,
+    (i, body): (usize, &Body),
+    q: &[f64],
+    v: Option<&[f64]>,
+) {
     if let (Some(k), Some(p), Some(v), Joint::Revolute(ax) | Joint::Rotor(ax)) =
         (data.plane_axis[i], body.parent, v, &body.joint)
     {
