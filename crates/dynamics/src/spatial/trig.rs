@@ -26,8 +26,9 @@ const QUADRANT_BITS: [(u64, [u64; 2]); 4] = [
 /// `(sin x, cos x)`, see the module doc.
 #[inline]
 pub fn sin_cos(x: f64) -> (f64, f64) {
-    // Negated `<=` so that NaN takes the library path too (one comparison).
-    if !(x.abs() <= REDUCTION_LIMIT) {
+    // False for NaN too: one comparison sends both cases to the library.
+    let reduced = x.abs() <= REDUCTION_LIMIT;
+    if !reduced {
         return x.sin_cos();
     }
     // Rounding by the shifter (no saturating float-to-integer conversion): `k` is `x 2/pi`
