@@ -122,12 +122,7 @@ pub(crate) fn backward(
     let u = ax.apply_inertia(m);
     let hat_f = m.apply(&data.bias_acc[link]) - data.fbar[link];
     let d = ax.dot_force(&u) + lr.sks;
-    if d <= 0.0 || !d.is_finite() {
-        return Err(DynamicsError::NotPositiveDefinite {
-            index: vi,
-            pivot: d,
-        });
-    }
+    crate::check::positive_pivot(vi, d)?;
     let x = &data.x[link];
     let b = x.tr_apply_force(&u) + lr.ks;
     let dinv = 1.0 / d;
