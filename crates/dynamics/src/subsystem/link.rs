@@ -136,12 +136,13 @@ pub(crate) fn backward(
     let k = x.tr_apply_force(&hat_f) + h + b * p;
     let (head, tail) = data.mbar.split_at_mut(link);
     let (m, out) = (&tail[0], &mut head[parent]);
-    match (lr.rigid, data.plane_axis[link]) {
-        (true, _) => add_rigid_congruence(&model.bodies[link].inertia, x, out),
-        (false, Some(axis)) => m.add_tr_transform_axis_to(axis, x, out),
-        (false, None) => m.add_tr_transform_to(x, out),
+    // The rotors' sum K is in the parent's `mbar_init`.
+    if lr.rigid {
+        add_rigid_congruence(&model.bodies[link].inertia, x, out);
+        out.sub_outer(&b, dinv);
+    } else {
+        m.add_tr_transform_sub_outer_to(data.plane_axis[link], x, (&b, dinv), out);
     }
-    out.sub_outer(&b, dinv); // The rotors' sum K is in the parent's `mbar_init`.
     data.fbar[parent] -= k;
     Ok(())
 }
