@@ -53,15 +53,12 @@ pub(super) fn dynamic_first_pass(
             }
         }
     }
-    for k in 0..data.axial_members.len() {
-        let i = data.axial_members[k];
-        if let Some(rc) = &data.axial_member[i] {
-            let h = rotor_bias(model, data, i, rc, fext)?;
-            data.fbar[i] = h;
-            if rc.rider {
-                // Lumped into the carrier: f-hat = M b - f gains the rider's h.
-                data.fbar[rc.carrier] -= h;
-            }
+    for (i, rc) in &data.axial_members {
+        let h = rotor_bias(model, data, *i, rc, fext)?;
+        data.fbar[*i] = h;
+        if rc.rider {
+            // Lumped into the carrier: f-hat = M b - f gains the rider's h.
+            data.fbar[rc.carrier] -= h;
         }
     }
     for s in 0..model.subsystems.len() {
