@@ -148,7 +148,9 @@ pub(crate) fn backward(
 }
 
 /// Second forward step (Algorithm 2.4) of link-with-rotors sub-system `s`:
-/// `qddot = p_S - D^-1 B_S^T a_p` and the link's acceleration `C a_p + J qddot + b`.
+/// `qddot = p_S - D^-1 B_S^T a_p` and the link's acceleration `C a_p + J qddot + b`, formed
+/// only if the link has children outside the sub-system (like the loop sub-systems' members,
+/// see [`Data`]: nothing reads a leaf's).
 pub(crate) fn forward(data: &mut Data, s: usize) {
     let Some(lr) = &data.link_rotors[s] else {
         return;
@@ -157,6 +159,9 @@ pub(crate) fn forward(data: &mut Data, s: usize) {
     let ap = lr.parent.map_or(Motion::zero(), |p| data.acc[p]);
     let qdd = data.p1[link] - data.dinv[link] * data.u[link].dot(&ap);
     data.ddq[lr.v_index] = qdd;
+    if lr.rigid {
+        return;
+    }
     let cap = plane::apply_motion(&data.x[link], data.plane_axis[link], &ap);
     data.acc[link] = cap + lr.axis.motion(qdd) + data.bias_acc[link];
 }
