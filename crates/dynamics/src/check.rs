@@ -3,7 +3,7 @@
 use crate::model::joint::Joint;
 use crate::spatial::Wrench;
 use crate::{Data, DynamicsError, Model};
-use nalgebra::DVector;
+use nalgebra::{DVector, Vector3};
 
 /// The workspace must have been built for this model.
 pub(crate) fn data(model: &Model, data: &Data) -> Result<(), DynamicsError> {
@@ -58,15 +58,32 @@ pub(crate) fn any_non_finite(xs: &[f64]) -> bool {
     xs.iter().fold(0, |acc, &x| acc | non_finite_bit(x)) != 0
 }
 
-/// [`any_non_finite`] over the six components of each wrench.
+/// Index of the first wrench with an infinite or NaN component. Screened by the sum of all
+/// components in six independent accumulators (one addition per component): a NaN or an
+/// infinity makes every sum it enters non-finite, so a finite sum clears them all; a
+/// non-finite sum (a bad entry, or finite entries overflowing) is settled by the exact scan.
 #[inline]
-fn any_non_finite_wrench(fs: &[Wrench]) -> bool {
-    let bits = |v: &nalgebra::Vector3<f64>| {
-        non_finite_bit(v.x) | non_finite_bit(v.y) | non_finite_bit(v.z)
-    };
-    fs.iter()
-        .fold(0, |acc, f| acc | bits(&f.ang) | bits(&f.lin))
-        != 0
+fn first_non_finite_wrench(fs: &[Wrench]) -> Option<usize> {
+    let (mut ang, mut lin) = (Vector3::zeros(), Vector3::zeros());
+    for f in fs {
+        ang += f.ang;
+        lin += f.lin;
+    }
+    if ang.iter().chain(lin.iter()).all(|x| x.is_finite()) {
+        return None;
+    }
+    fs.iter().position(|f| !f.is_finite())
+}
+
+/// A one-DoF pivot `D = J^T M-bar J` of the O(n) backward pass (2.67) must be positive and
+/// finite, else [`DynamicsError::NotPositiveDefinite`] at velocity index `index`: two
+/// comparisons (a NaN fails both) instead of a sign test plus a finiteness classification.
+#[inline(always)]
+pub(crate) fn positive_pivot(index: usize, d: f64) -> Result<(), DynamicsError> {
+    if d > 0.0 && d < f64::INFINITY {
+        return Ok(());
+    }
+    Err(DynamicsError::NotPositiveDefinite { index, pivot: d })
 }
 
 /// Length and finiteness of `q`, and non-zero free-joint quaternions.
@@ -91,14 +108,13 @@ pub(crate) fn wrenches(model: &Model, fext: Option<&[Wrench]>) -> Result<(), Dyn
     if fext.len() != model.nbodies() {
         return Err(mismatch("fext", model.nbodies(), fext.len()));
     }
-    if !any_non_finite_wrench(fext) {
-        return Ok(());
+    match first_non_finite_wrench(fext) {
+        None => Ok(()),
+        Some(index) => Err(DynamicsError::NonFinite {
+            argument: "fext",
+            index,
+        }),
     }
-    let index = fext.iter().position(|f| !f.is_finite()).unwrap_or(0);
-    Err(DynamicsError::NonFinite {
-        argument: "fext",
-        index,
-    })
 }
 
 /// A dimension-mismatch error.
@@ -116,7 +132,7 @@ mod tests {
     use proptest::prelude::*;
 
     proptest! {
-        /// The bit scans agree with `f64::is_finite` for every position of a bad entry.
+        /// The bit scan agrees with `f64::is_finite` for every position of a bad entry.
         #[test]
         fn bit_scans_match_is_finite(
             xs in prop::collection::vec(-1e300f64..1e300, 0..40),
@@ -129,12 +145,55 @@ mod tests {
             }
             let expect = xs.iter().any(|x| !x.is_finite());
             prop_assert_eq!(any_non_finite(&xs), expect);
+        }
+
+        /// The summed wrench screen finds the first bad wrench exactly like `is_finite`, also
+        /// when finite entries near the largest `f64` overflow the sums.
+        #[test]
+        fn wrench_screen_matches_is_finite(
+            xs in prop::collection::vec(-1.0f64..1.0, 0..60),
+            scale in prop::sample::select(vec![1.0, 1e300, f64::MAX]),
+            at in 0usize..60,
+            bad in prop::sample::select(vec![f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1.0]),
+        ) {
+            let mut xs: Vec<f64> = xs.iter().map(|x| x * scale).collect();
+            if at < xs.len() {
+                xs[at] = bad;
+            }
             let fs: Vec<Wrench> = xs
                 .chunks_exact(6)
                 .map(|c| Wrench::from_vector(&nalgebra::Vector6::from_column_slice(c)))
                 .collect();
-            let expect = fs.iter().any(|f| !f.is_finite());
-            prop_assert_eq!(any_non_finite_wrench(&fs), expect);
+            let expect = fs.iter().position(|f| !f.is_finite());
+            prop_assert_eq!(first_non_finite_wrench(&fs), expect);
+        }
+    }
+
+    /// The pivot test rejects exactly what `d <= 0 || !d.is_finite()` rejects.
+    #[test]
+    fn positive_pivot_matches_sign_and_finiteness() {
+        let cases = [
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            0.0,
+            -0.0,
+            -1e-300,
+            f64::MIN_POSITIVE,
+            5e-324,
+            1.0,
+            f64::MAX,
+        ];
+        for d in cases {
+            let bad = d <= 0.0 || !d.is_finite();
+            match positive_pivot(7, d) {
+                Ok(()) => assert!(!bad, "{d} accepted"),
+                Err(DynamicsError::NotPositiveDefinite { index: 7, pivot }) => {
+                    assert!(bad, "{d} rejected");
+                    assert_eq!(pivot.to_bits(), d.to_bits());
+                }
+                Err(e) => panic!("unexpected {e:?}"),
+            }
         }
     }
 }

@@ -91,8 +91,9 @@ pub struct Data {
     pub(crate) axial_member: Vec<Option<AxialMember>>,
     /// Per body: the riders it carries and their lumped inertia ([`Carried`]).
     pub(crate) carried: Vec<Option<Carried>>,
-    /// Bodies with a [`Data::axial_member`], ascending.
-    pub(crate) axial_members: Vec<usize>,
+    /// Bodies with a [`Data::axial_member`], ascending, with a copy of it (the O(n) first
+    /// pass walks this list: no per-body `Option` and bounds checks).
+    pub(crate) axial_members: Vec<(usize, AxialMember)>,
     /// Per body: the spin or travel of a roller-screw rotor or nut with a
     /// [`Data::axial_member`] at the last forward-dynamics kinematics pass (unused otherwise).
     pub(crate) axial_motion: Vec<AxialMotion>,
@@ -261,7 +262,9 @@ impl Data {
             link_rotors: link_rotor_subsystems(model, &axial_member),
             mbar_init: mbar_init(model, &axial_member, &massless_leaf),
             massless_leaf,
-            axial_members: (0..n).filter(|&i| axial_member[i].is_some()).collect(),
+            axial_members: (axial_member.iter().enumerate())
+                .filter_map(|(i, rc)| rc.map(|rc| (i, rc)))
+                .collect(),
             carried: carriers(model, &axial_member),
             axial_motion: vec![AxialMotion::default(); n],
             axial_member,

@@ -122,12 +122,7 @@ pub(crate) fn backward(
     let u = ax.apply_inertia(m);
     let hat_f = m.apply(&data.bias_acc[link]) - data.fbar[link];
     let d = ax.dot_force(&u) + lr.sks;
-    if d <= 0.0 || !d.is_finite() {
-        return Err(DynamicsError::NotPositiveDefinite {
-            index: vi,
-            pivot: d,
-        });
-    }
+    crate::check::positive_pivot(vi, d)?;
     let x = &data.x[link];
     let b = x.tr_apply_force(&u) + lr.ks;
     let dinv = 1.0 / d;
@@ -141,18 +136,21 @@ pub(crate) fn backward(
     let k = x.tr_apply_force(&hat_f) + h + b * p;
     let (head, tail) = data.mbar.split_at_mut(link);
     let (m, out) = (&tail[0], &mut head[parent]);
-    match (lr.rigid, data.plane_axis[link]) {
-        (true, _) => add_rigid_congruence(&model.bodies[link].inertia, x, out),
-        (false, Some(axis)) => m.add_tr_transform_axis_to(axis, x, out),
-        (false, None) => m.add_tr_transform_to(x, out),
+    // The rotors' sum K is in the parent's `mbar_init`.
+    if lr.rigid {
+        add_rigid_congruence(&model.bodies[link].inertia, x, out);
+        out.sub_outer(&b, dinv);
+    } else {
+        m.add_tr_transform_sub_outer_to(data.plane_axis[link], x, (&b, dinv), out);
     }
-    out.sub_outer(&b, dinv); // The rotors' sum K is in the parent's `mbar_init`.
     data.fbar[parent] -= k;
     Ok(())
 }
 
 /// Second forward step (Algorithm 2.4) of link-with-rotors sub-system `s`:
-/// `qddot = p_S - D^-1 B_S^T a_p` and the link's acceleration `C a_p + J qddot + b`.
+/// `qddot = p_S - D^-1 B_S^T a_p` and the link's acceleration `C a_p + J qddot + b`, formed
+/// only if the link has children outside the sub-system (like the loop sub-systems' members,
+/// see [`Data`]: nothing reads a leaf's).
 pub(crate) fn forward(data: &mut Data, s: usize) {
     let Some(lr) = &data.link_rotors[s] else {
         return;
@@ -161,6 +159,9 @@ pub(crate) fn forward(data: &mut Data, s: usize) {
     let ap = lr.parent.map_or(Motion::zero(), |p| data.acc[p]);
     let qdd = data.p1[link] - data.dinv[link] * data.u[link].dot(&ap);
     data.ddq[lr.v_index] = qdd;
+    if lr.rigid {
+        return;
+    }
     let cap = plane::apply_motion(&data.x[link], data.plane_axis[link], &ap);
     data.acc[link] = cap + lr.axis.motion(qdd) + data.bias_acc[link];
 }

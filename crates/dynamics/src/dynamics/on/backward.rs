@@ -55,12 +55,7 @@ fn body_backward(
             let mbar = &mut data.mbar[i];
             let u = ax.apply_inertia(mbar);
             let d = ax.dot_force(&u);
-            if d <= 0.0 || !d.is_finite() {
-                return Err(DynamicsError::NotPositiveDefinite {
-                    index: body.v_index,
-                    pivot: d,
-                });
-            }
+            check::positive_pivot(body.v_index, d)?;
             let dinv = 1.0 / d;
             let b = &data.bias_acc[i];
             let fbar = &data.fbar[i];

@@ -53,15 +53,12 @@ pub(super) fn dynamic_first_pass(
             }
         }
     }
-    for k in 0..data.axial_members.len() {
-        let i = data.axial_members[k];
-        if let Some(rc) = &data.axial_member[i] {
-            let h = rotor_bias(model, data, i, rc, fext)?;
-            data.fbar[i] = h;
-            if rc.rider {
-                // Lumped into the carrier: f-hat = M b - f gains the rider's h.
-                data.fbar[rc.carrier] -= h;
-            }
+    for (i, rc) in &data.axial_members {
+        let h = rotor_bias(model, data, *i, rc, fext)?;
+        data.fbar[*i] = h;
+        if rc.rider {
+            // Lumped into the carrier: f-hat = M b - f gains the rider's h.
+            data.fbar[rc.carrier] -= h;
         }
     }
     for s in 0..model.subsystems.len() {
@@ -88,7 +85,7 @@ fn rotor_bias(
         None => (Vector3::zeros(), model.gravity),
     };
     let mut h = parent_frame_bias(rc, &w, &g, rc.state(data, i));
-    let Some(f) = fext.map(|f| f[i]).filter(|f| *f != Wrench::zero()) else {
+    let Some(f) = fext.map(|f| f[i]).filter(|f| !is_zero(f)) else {
         return Ok(h);
     };
     let x = match &body.joint_model {
@@ -110,4 +107,32 @@ fn rotor_bias(
         false => f,
     };
     Ok(h)
+}
+
+/// True if every component of `f` is zero: an OR of the six bit patterns settles the usual
+/// all-`+0.0` wrench without six float comparisons; any set bit (also of a `-0.0`) falls
+/// back to the comparison.
+#[inline(always)]
+fn is_zero(f: &Wrench) -> bool {
+    let (a, l) = (&f.ang, &f.lin);
+    let bits = [a.x, a.y, a.z, l.x, l.y, l.z].map(f64::to_bits);
+    bits.iter().fold(0, |acc, b| acc | b) == 0 || *f == Wrench::zero()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The bit test agrees with the float comparison, also for `-0.0`, tiny and NaN entries.
+    #[test]
+    fn is_zero_matches_comparison() {
+        for c in 0..6 {
+            for x in [0.0, -0.0, 5e-324, -1.0, f64::NAN, f64::INFINITY] {
+                let mut v = nalgebra::Vector6::zeros();
+                v[c] = x;
+                let f = Wrench::from_vector(&v);
+                assert_eq!(is_zero(&f), f == Wrench::zero(), "entry {c} = {x}");
+            }
+        }
+    }
 }

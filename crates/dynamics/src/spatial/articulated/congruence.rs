@@ -3,57 +3,83 @@
 
 use nalgebra::Matrix3;
 
-/// `A^T M A` for a rotation `A` about coordinate axis `K` (`A e_K = e_K`): only the plane
-/// `(p, q)` normal to the axis mixes, `T = M A` then `A^T T`, 12 multiplications each.
+/// The in-plane entries of a rotation `A` about coordinate axis `K` (plane `(p, q)` normal to
+/// it), `A_pp = A_qq = c`, `A_pq = -A_qp = s`, and their double angle `(c^2 - s^2, 2 c s)`:
+/// in the plane, the trace and the antisymmetric part of a 2x2 block are invariant under
+/// `A^T M A` and its traceless symmetric part turns by the double angle, shared by the blocks.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct PlaneRotation {
+    /// `cos` of the angle.
+    c: f64,
+    /// `sin` of the angle (entry `(p, q)`).
+    s: f64,
+    /// `cos` of the double angle.
+    c2: f64,
+    /// `sin` of the double angle.
+    s2: f64,
+}
+
+impl PlaneRotation {
+    /// From the rotation matrix `a` about axis `K` (`A e_K = e_K`).
+    #[inline(always)]
+    pub(super) fn new<const K: usize>(a: &Matrix3<f64>) -> Self {
+        let (p, q) = ((K + 1) % 3, (K + 2) % 3);
+        let (c, s) = (a[(p, p)], a[(p, q)]);
+        Self {
+            c,
+            s,
+            c2: c * c - s * s,
+            s2: 2.0 * c * s,
+        }
+    }
+
+    /// The traceless symmetric part `[e f; f -e]` of a plane block turned: `(e', f')`.
+    #[inline(always)]
+    fn turn(&self, e: f64, f: f64) -> (f64, f64) {
+        (e * self.c2 - f * self.s2, e * self.s2 + f * self.c2)
+    }
+
+    /// `(x_p c - x_q s, x_p s + x_q c)`: a row `x^T A` or column `A^T x` restricted to the plane.
+    #[inline(always)]
+    fn mul(&self, xp: f64, xq: f64) -> (f64, f64) {
+        (xp * self.c - xq * self.s, xp * self.s + xq * self.c)
+    }
+}
+
+/// `A^T M A` for a rotation about coordinate axis `K` ([`PlaneRotation`]): row and column `K`
+/// rotate in the plane (8 multiplications), the plane block by its double angle (4).
 #[inline]
-pub(super) fn axis_congruence<const K: usize>(m: &Matrix3<f64>, a: &Matrix3<f64>) -> Matrix3<f64> {
+pub(super) fn axis_congruence<const K: usize>(m: &Matrix3<f64>, r: &PlaneRotation) -> Matrix3<f64> {
     let (p, q) = ((K + 1) % 3, (K + 2) % 3);
-    let (app, apq, aqp, aqq) = (a[(p, p)], a[(p, q)], a[(q, p)], a[(q, q)]);
-    let mut t = *m;
-    for r in 0..3 {
-        let (mp, mq) = (m[(r, p)], m[(r, q)]);
-        t[(r, p)] = mp * app + mq * aqp;
-        t[(r, q)] = mp * apq + mq * aqq;
-    }
-    let mut out = t;
-    for c in 0..3 {
-        let (tp, tq) = (t[(p, c)], t[(q, c)]);
-        out[(p, c)] = app * tp + aqp * tq;
-        out[(q, c)] = apq * tp + aqq * tq;
-    }
+    let (a, b, c, d) = (m[(p, p)], m[(p, q)], m[(q, p)], m[(q, q)]);
+    let (h, k) = (0.5 * (a + d), 0.5 * (b - c));
+    let (e, f) = r.turn(0.5 * (a - d), 0.5 * (b + c));
+    let mut out = *m;
+    (out[(p, p)], out[(q, q)]) = (h + e, h - e);
+    (out[(p, q)], out[(q, p)]) = (k + f, f - k);
+    (out[(K, p)], out[(K, q)]) = r.mul(m[(K, p)], m[(K, q)]);
+    (out[(p, K)], out[(q, K)]) = r.mul(m[(p, K)], m[(q, K)]);
     out
 }
 
-/// `A^T S A` for symmetric `S` and a rotation `A` about coordinate axis `K`: the upper
-/// triangle (18 multiplications), mirrored, so the result is exactly symmetric.
+/// `A^T S A` for symmetric `S` and a rotation about coordinate axis `K` ([`PlaneRotation`]):
+/// the upper triangle (6 multiplications), mirrored, so the result is exactly symmetric.
 #[inline]
 pub(super) fn sym_axis_congruence<const K: usize>(
     m: &Matrix3<f64>,
-    a: &Matrix3<f64>,
+    r: &PlaneRotation,
 ) -> Matrix3<f64> {
     let (p, q) = ((K + 1) % 3, (K + 2) % 3);
-    let (app, apq, aqp, aqq) = (a[(p, p)], a[(p, q)], a[(q, p)], a[(q, q)]);
-    // Plane columns of T = S A (rows p, q and K).
-    let (tpp, tqp) = (
-        m[(p, p)] * app + m[(p, q)] * aqp,
-        m[(q, p)] * app + m[(q, q)] * aqp,
-    );
-    let (tpq, tqq) = (
-        m[(p, p)] * apq + m[(p, q)] * aqq,
-        m[(q, p)] * apq + m[(q, q)] * aqq,
-    );
-    let (tkp, tkq) = (
-        m[(K, p)] * app + m[(K, q)] * aqp,
-        m[(K, p)] * apq + m[(K, q)] * aqq,
-    );
-    let opq = app * tpq + aqp * tqq;
+    let (a, d) = (m[(p, p)], m[(q, q)]);
+    let h = 0.5 * (a + d);
+    let (e, f) = r.turn(0.5 * (a - d), m[(p, q)]);
+    let (kp, kq) = r.mul(m[(K, p)], m[(K, q)]);
     let mut out = Matrix3::zeros();
     out[(K, K)] = m[(K, K)];
-    (out[(K, p)], out[(p, K)]) = (tkp, tkp);
-    (out[(K, q)], out[(q, K)]) = (tkq, tkq);
-    out[(p, p)] = app * tpp + aqp * tqp;
-    (out[(p, q)], out[(q, p)]) = (opq, opq);
-    out[(q, q)] = apq * tpq + aqq * tqq;
+    (out[(K, p)], out[(p, K)]) = (kp, kp);
+    (out[(K, q)], out[(q, K)]) = (kq, kq);
+    (out[(p, p)], out[(q, q)]) = (h + e, h - e);
+    (out[(p, q)], out[(q, p)]) = (f, f);
     out
 }
 

@@ -1,12 +1,36 @@
 //! Shift of rotated inertia blocks by the joint offset `r`: the `[E 0; -r~ E]` factor of
 //! `C_i` (2.36) in the congruence `C^T I C` of (2.69).
 
-use super::ArticulatedInertia;
+use super::{outer, ArticulatedInertia};
+use crate::spatial::Force;
 use nalgebra::{Matrix3, Vector3};
 
+/// What [`store`] subtracts from the shifted blocks: nothing (`()`) or a rank-one term
+/// `w b b^T` given as `(b, w)` (the `- B_S D^-1 B_S^T` of a one-DoF step (2.72) folded into
+/// the accumulation); a type parameter, so the plain congruence carries no extra branch.
+pub(super) trait Minus: Copy {
+    /// The blocks `[ang, cross, lin]` less the term.
+    fn from(self, blocks: [Matrix3<f64>; 3]) -> [Matrix3<f64>; 3];
+}
+
+impl Minus for () {
+    #[inline(always)]
+    fn from(self, blocks: [Matrix3<f64>; 3]) -> [Matrix3<f64>; 3] {
+        blocks
+    }
+}
+
+impl Minus for (&Force, f64) {
+    #[inline(always)]
+    fn from(self, [ang, cross, lin]: [Matrix3<f64>; 3]) -> [Matrix3<f64>; 3] {
+        let [oa, oc, ol] = outer(self.0, self.1);
+        [ang - oa, cross - oc, lin - ol]
+    }
+}
+
 /// Shift of rotated blocks by `r` (parent coordinates), the `[E 0; -r~ E]` factor of `C`:
-/// `cross' = B - (D r~)^T`, `ang' = A - B r~ - (B r~)^T - r~ D r~`, written to `out`
-/// (`ADD = false`) or added to it (`ADD = true`, no temporary inertia). Joint offsets are
+/// `cross' = B - (D r~)^T`, `ang' = A - B r~ - (B r~)^T - r~ D r~`, less `minus`, written to
+/// `out` (`ADD = false`) or added to it (`ADD = true`, no temporary inertia). Joint offsets are
 /// often zero or along one coordinate axis (constant for revolute joints): those skip the
 /// products with the zero entries of `r~` ([`shift_axis`]).
 #[inline]
@@ -15,25 +39,28 @@ pub(super) fn shift_into<const ADD: bool>(
     cross: &Matrix3<f64>,
     lin: Matrix3<f64>,
     r: &Vector3<f64>,
+    minus: impl Minus,
     out: &mut ArticulatedInertia,
 ) {
     match (r.x != 0.0, r.y != 0.0, r.z != 0.0) {
-        (false, false, false) => store::<ADD>(*ang, *cross, lin, out),
-        (true, false, false) => shift_axis::<0, ADD>(ang, cross, lin, r.x, out),
-        (false, true, false) => shift_axis::<1, ADD>(ang, cross, lin, r.y, out),
-        (false, false, true) => shift_axis::<2, ADD>(ang, cross, lin, r.z, out),
-        _ => shift_general::<ADD>(ang, cross, lin, r, out),
+        (false, false, false) => store::<ADD>(*ang, *cross, lin, minus, out),
+        (true, false, false) => shift_axis::<0, ADD>(ang, cross, lin, r.x, minus, out),
+        (false, true, false) => shift_axis::<1, ADD>(ang, cross, lin, r.y, minus, out),
+        (false, false, true) => shift_axis::<2, ADD>(ang, cross, lin, r.z, minus, out),
+        _ => shift_general::<ADD>(ang, cross, lin, r, minus, out),
     }
 }
 
-/// The blocks written to (`ADD = false`) or added to (`ADD = true`) `out`.
+/// The blocks less `minus` written to (`ADD = false`) or added to (`ADD = true`) `out`.
 #[inline]
 fn store<const ADD: bool>(
     ang: Matrix3<f64>,
     cross: Matrix3<f64>,
     lin: Matrix3<f64>,
+    minus: impl Minus,
     out: &mut ArticulatedInertia,
 ) {
+    let [ang, cross, lin] = minus.from([ang, cross, lin]);
     if ADD {
         out.ang += ang;
         out.cross += cross;
@@ -52,6 +79,7 @@ pub(super) fn shift_axis<const J: usize, const ADD: bool>(
     cross: &Matrix3<f64>,
     lin: Matrix3<f64>,
     rho: f64,
+    minus: impl Minus,
     out: &mut ArticulatedInertia,
 ) {
     let (p, q) = ((J + 1) % 3, (J + 2) % 3);
@@ -77,7 +105,7 @@ pub(super) fn shift_axis<const J: usize, const ADD: bool>(
     let e = |i: usize, j: usize| ang[(i, j)] - br[(i, j)] - br[(j, i)] - rdr(i, j);
     let (m01, m02, m12) = (e(0, 1), e(0, 2), e(1, 2));
     let ang = Matrix3::new(e(0, 0), m01, m02, m01, e(1, 1), m12, m02, m12, e(2, 2));
-    store::<ADD>(ang, cross - dr.transpose(), lin, out);
+    store::<ADD>(ang, cross - dr.transpose(), lin, minus, out);
 }
 
 /// The shift for a general `r`, the symmetric `ang'` evaluated on its upper triangle only
@@ -88,6 +116,7 @@ pub(super) fn shift_general<const ADD: bool>(
     cross: &Matrix3<f64>,
     lin: Matrix3<f64>,
     r: &Vector3<f64>,
+    minus: impl Minus,
     out: &mut ArticulatedInertia,
 ) {
     let dr = mul_skew(&lin, r);
@@ -100,7 +129,7 @@ pub(super) fn shift_general<const ADD: bool>(
     let e = |i: usize, j: usize| ang[(i, j)] - br[(i, j)] - br[(j, i)] - rdr(i, j);
     let (m01, m02, m12) = (e(0, 1), e(0, 2), e(1, 2));
     let ang = Matrix3::new(e(0, 0), m01, m02, m01, e(1, 1), m12, m02, m12, e(2, 2));
-    store::<ADD>(ang, cross - dr.transpose(), lin, out);
+    store::<ADD>(ang, cross - dr.transpose(), lin, minus, out);
 }
 
 /// `M r~`: row `i` is `m_i x r`.
@@ -155,14 +184,14 @@ mod tests {
                 r[axis] = rho;
             }
             let (mut fast, mut general) = (ArticulatedInertia::zero(), ArticulatedInertia::zero());
-            shift_into::<false>(&m.ang, &m.cross, m.lin, &r, &mut fast);
-            shift_general::<false>(&m.ang, &m.cross, m.lin, &r, &mut general);
+            shift_into::<false>(&m.ang, &m.cross, m.lin, &r, (), &mut fast);
+            shift_general::<false>(&m.ang, &m.cross, m.lin, &r, (), &mut general);
             let tol = 1e-14 * general.to_matrix().amax();
             prop_assert!((fast.to_matrix() - general.to_matrix()).amax() <= tol);
             let start = inertia(&base);
             let (mut fast, mut general) = (start, start);
-            shift_into::<true>(&m.ang, &m.cross, m.lin, &r, &mut fast);
-            shift_general::<true>(&m.ang, &m.cross, m.lin, &r, &mut general);
+            shift_into::<true>(&m.ang, &m.cross, m.lin, &r, (), &mut fast);
+            shift_general::<true>(&m.ang, &m.cross, m.lin, &r, (), &mut general);
             prop_assert!((fast.to_matrix() - general.to_matrix()).amax() <= 2.0 * tol);
             // Dense check of the full congruence with this offset and a general rotation
             // (and a general offset, which takes the general shift).
