@@ -247,8 +247,10 @@ mod tests {
             (m1, m2) in (0.0f64..3.0, 0.0f64..2.0),
             c1 in prop::array::uniform3(-0.3f64..0.3),
             c2 in prop::array::uniform3(-0.3f64..0.3),
-            d1 in prop::array::uniform3(0.01f64..0.02),
-            d2 in prop::array::uniform3(0.01f64..0.02),
+            // Diagonals in [0.012, 0.02) with |off| < 0.002 keep the principal moments inside
+            // the triangle inequality (from 0.01 a rare draw broke it and `body` panicked).
+            d1 in prop::array::uniform3(0.012f64..0.02),
+            d2 in prop::array::uniform3(0.012f64..0.02),
             off in -0.002f64..0.002,
             shift in prop::array::uniform3(-0.5f64..0.5),
         ) {
