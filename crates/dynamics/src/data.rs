@@ -1,5 +1,6 @@
 //! Preallocated per-call workspace (model/data split): every recursion writes here.
 
+use crate::kinematics::{checked_step_kind, fd_step_kind, step_kind, StepKind};
 use crate::mechanism::ankle::AnkleLoop;
 use crate::mechanism::knee::KneeLoopCache;
 use crate::mechanism::{AxialMotion, MechanismError};
@@ -111,6 +112,11 @@ pub struct Data {
     /// Coordinate axis (0, 1, 2) of a revolute joint whose placement is a pure translation, so
     /// that `C_i` rotates about that axis ([`ArticulatedInertia::add_tr_transform_axis_to`]), per body.
     pub(crate) plane_axis: Vec<Option<usize>>,
+    /// Per body: how the first forward recursion steps it ([`crate::kinematics::step_kind`]).
+    pub(crate) step_kind: Vec<StepKind>,
+    /// Per body: how the forward-dynamics kinematics pass steps it (axial members skipped or
+    /// reduced to their spin or travel, [`crate::kinematics::fd_step_kind`]).
+    pub(crate) fd_step_kind: Vec<StepKind>,
     /// Per body: the joint placement is the identity, so a coupled part's `C` is its relative
     /// pose alone (no placement products in the kinematics).
     pub(crate) unplaced: Vec<bool>,
@@ -226,6 +232,13 @@ impl Data {
         let rotor_frames = crate::kinematics::rotor_frames(model);
         let axial_member = axial_members(model, &rotor_frames);
         let massless_leaf = massless_leaves(model);
+        let plane_axes: Vec<Option<usize>> = model.bodies.iter().map(plane_axis).collect();
+        let step_kinds: Vec<StepKind> = (model.bodies.iter().enumerate().zip(&plane_axes))
+            .map(|(body, &axis)| step_kind(body, axis))
+            .collect();
+        let fd_step_kinds = (step_kinds.iter().zip(&axial_member))
+            .map(|(&kind, rc)| fd_step_kind(kind, rc.map(|rc| rc.kind)))
+            .collect();
         let mut col_offset = vec![0; n + 1];
         for (i, b) in model.bodies.iter().enumerate() {
             col_offset[i + 1] = col_offset[i] + b.v_set.len();
@@ -269,7 +282,9 @@ impl Data {
             axial_motion: vec![AxialMotion::default(); n],
             axial_member,
             rotor_frame: rotor_frames,
-            plane_axis: model.bodies.iter().map(plane_axis).collect(),
+            plane_axis: plane_axes,
+            step_kind: step_kinds,
+            fd_step_kind: fd_step_kinds,
             unplaced: crate::kinematics::identity_placements(model),
             ankle_loop: None,
             knee_loop: None,
@@ -283,6 +298,17 @@ impl Data {
             nle: DVector::zeros(nv),
             factor: DMatrix::zeros(nv, nv),
         }
+    }
+
+    /// True if the precomputed kinematics step kinds of every body of `model` (this
+    /// workspace's model) are those the per-pass chain of checks they replace would choose,
+    /// in the general and the forward-dynamics passes (a test hook for models of any crate).
+    #[doc(hidden)]
+    pub fn step_kinds_match_checks(&self, model: &Model) -> bool {
+        (0..model.nbodies()).all(|i| {
+            self.step_kind[i] == checked_step_kind(model, self, i, false)
+                && self.fd_step_kind[i] == checked_step_kind(model, self, i, true)
+        })
     }
 
     /// Number of bodies this workspace was sized for.

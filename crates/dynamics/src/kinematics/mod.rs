@@ -19,11 +19,12 @@ pub(crate) use coupled::{coupled_transform, identity_placements};
 pub(crate) use joint::{add_projected_force, joint_column, relative_motion, six};
 pub(crate) use rotor::{rotor_frames, rotor_transform};
 use step::body_step;
-pub(crate) use step::{body_force, body_kinematics, force_of};
+pub(crate) use step::{
+    body_force, body_kinematics, checked_step_kind, fd_step_kind, force_of, step_kind, StepKind,
+};
 
 use crate::check;
 use crate::spatial::Wrench;
-use crate::subsystem::axial::AxialKind;
 use crate::{Data, DynamicsError, Model};
 use nalgebra::DVector;
 
@@ -44,7 +45,8 @@ pub fn forward_kinematics(
     check::vector("a", a, model.nv())?;
     let (q, v) = (q.as_slice(), v.as_slice());
     for body in model.bodies.iter().enumerate() {
-        body_step(model, data, body, q, Some(v));
+        let kind = data.step_kind[body.0];
+        body_step(model, data, body, kind, q, Some(v));
     }
     take_fault(data)?;
     propagate_accelerations(model, data, Some(a));
@@ -60,7 +62,8 @@ pub fn update_placements(
     check::data(model, data)?;
     check::configuration(model, q)?;
     for body in model.bodies.iter().enumerate() {
-        body_step(model, data, body, q.as_slice(), None);
+        let kind = data.step_kind[body.0];
+        body_step(model, data, body, kind, q.as_slice(), None);
     }
     take_fault(data)
 }
@@ -99,7 +102,8 @@ pub(crate) fn first_forward(
 ) {
     let (q, v) = (q.as_slice(), v.as_slice());
     for (i, body) in model.bodies.iter().enumerate() {
-        body_step(model, data, (i, body), q, Some(v));
+        let kind = data.step_kind[i];
+        body_step(model, data, (i, body), kind, q, Some(v));
         body_force(model, data, i, fext);
     }
 }
@@ -122,15 +126,15 @@ pub(crate) fn first_forward_kinematics(
     let (q, v) = (q.as_slice(), v.as_slice());
     // Taken out of `data` for the loop (no step reads it) and put back: iterated beside the
     // bodies without bounds checks while the steps borrow `data`.
-    let members = std::mem::take(&mut data.axial_member);
-    for (i, (body, member)) in model.bodies.iter().zip(&members).enumerate() {
-        match member.as_ref().map(|rc| rc.kind) {
-            None => body_step(model, data, (i, body), q, Some(v)),
-            Some(AxialKind::Geared) => {}
-            Some(_) => coupled::axial_motion(body, data, i, q, v),
+    let kinds = std::mem::take(&mut data.fd_step_kind);
+    for (i, (body, &kind)) in model.bodies.iter().zip(&kinds).enumerate() {
+        match kind {
+            StepKind::SkipRotor => {}
+            StepKind::AxialMotion => coupled::axial_motion(body, data, i, q, v),
+            kind => body_step(model, data, (i, body), kind, q, Some(v)),
         }
     }
-    data.axial_member = members;
+    data.fd_step_kind = kinds;
 }
 
 /// Kinematics of the rotors skipped by [`first_forward_kinematics`], from its stored `q, v`.
@@ -141,7 +145,15 @@ pub(crate) fn complete_rotor_kinematics(model: &Model, data: &mut Data) {
     );
     for (i, body) in model.bodies.iter().enumerate() {
         if data.axial_member[i].is_some() {
-            body_step(model, data, (i, body), q.as_slice(), Some(v.as_slice()));
+            let kind = data.step_kind[i];
+            body_step(
+                model,
+                data,
+                (i, body),
+                kind,
+                q.as_slice(),
+                Some(v.as_slice()),
+            );
         }
     }
     (data.fd_q, data.fd_v) = (q, v);

@@ -4,7 +4,7 @@
 //! `Jdot_i qdot_i = 0`, so the products of the general step are written out with these zeros
 //! dropped. Same results as the general step ([`super::step`]) up to the sign of zeros.
 
-use crate::spatial::{sin_cos, JointAxis, Motion, SpatialTransform};
+use crate::spatial::{sin_cos, Motion, SpatialTransform};
 use crate::Data;
 use nalgebra::{Matrix3, Vector3};
 
@@ -27,21 +27,19 @@ fn parent_child<T>(v: &mut [T], p: usize, i: usize) -> (&T, &mut T) {
 }
 
 /// `C_i`, world pose, `g_i`, `v_i` (2.33) and `b_i` (2.37) of body `i` with parent `p < i`,
-/// placement translation `trans`, joint axis `ax` (angular, about `e_K`) at coordinate `q`
-/// and rate `qd`.
+/// placement translation `trans`, angular joint axis `e_K` with scale `scale` at coordinate
+/// and rate `(q, qd)`.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 pub(super) fn plane_revolute_step<const K: usize>(
     data: &mut Data,
     i: usize,
     p: usize,
     trans: &Vector3<f64>,
-    ax: &JointAxis,
-    q: f64,
-    qd: f64,
+    scale: f64,
+    (q, qd): (f64, f64),
 ) {
     let (a, b) = ((K + 1) % 3, (K + 2) % 3);
-    let (s, c) = sin_cos(q * ax.scale);
+    let (s, c) = sin_cos(q * scale);
     // World rotation `W_p A^T`: columns a and b mix, column K is the parent's.
     let (wp, w_rot) = parent_child(&mut data.world_rot, p, i);
     let (pos_p, pos) = parent_child(&mut data.world_pos, p, i);
@@ -57,7 +55,7 @@ pub(super) fn plane_revolute_step<const K: usize>(
     let w = rot_mul::<K>(s, c, &vp.ang);
     let rk = rot_mul::<K>(s, c, trans);
     let lin = rot_mul::<K>(s, c, &vp.lin) + w.cross(&rk);
-    let omega = ax.scale * qd;
+    let omega = scale * qd;
     let mut ang = w;
     ang[K] += omega;
     *vel = Motion::new(ang, lin);
@@ -167,6 +165,28 @@ mod tests {
             .filter(|b| matches!(b.joint, Joint::Fixed) && b.placement_x.rot == Matrix3::identity())
             .count();
         assert!(fixed > 10, "{fixed}");
+    }
+
+    /// The precomputed step kinds are those of the per-pass checks, and the trees hold plane
+    /// and translation kinds.
+    #[test]
+    fn plane_trees_step_kinds_match_the_checks() {
+        use super::super::step::StepKind;
+        let mut kinds = [0; 2];
+        for model in (0..64).map(plane_tree) {
+            let data = Data::new(&model);
+            assert!(data.step_kinds_match_checks(&model));
+            for kind in &data.step_kind {
+                match kind {
+                    StepKind::PlaneX(_) | StepKind::PlaneY(_) | StepKind::PlaneZ(_) => {
+                        kinds[0] += 1
+                    }
+                    StepKind::Translation(_) => kinds[1] += 1,
+                    _ => {}
+                }
+            }
+        }
+        assert!(kinds.iter().all(|&k| k > 10), "{kinds:?}");
     }
 
     /// Equal up to rounding: the written-out and the general products associate differently,

@@ -7,6 +7,7 @@ use crate::model::joint::Joint;
 use crate::model::Body;
 use crate::spatial::plane::{General, Plane, RotationOps};
 use crate::spatial::{Force, Motion, RigidInertia, SpatialTransform, SubspaceKind, Wrench};
+use crate::subsystem::axial::AxialKind;
 use crate::{Data, Model};
 use nalgebra::{DVector, Matrix3, Vector3};
 
@@ -21,42 +22,153 @@ pub(crate) fn body_kinematics(
     v: Option<&DVector<f64>>,
 ) {
     let body = (i, &model.bodies[i]);
-    body_step(model, data, body, q.as_slice(), v.map(|v| v.as_slice()));
+    let kind = data.step_kind[i];
+    body_step(
+        model,
+        data,
+        body,
+        kind,
+        q.as_slice(),
+        v.map(|v| v.as_slice()),
+    );
 }
 
-/// [`body_kinematics`] of body `(i, model.bodies[i])` on coordinate slices (both taken once
-/// per pass by the callers, which iterate over the bodies without bounds checks). Revolute
-/// joints about a coordinate axis of an unrotated placement take the written-out path of
-/// [`super::plane`], fixed joints with a translation-only placement its translation step (inlined into the passes; `p < i`, true for every model, lets the
-/// compiler drop bounds checks on the parent's entries).
+/// How the first forward recursion steps one body, decided once per model in
+/// [`Data::new`] from the joint, placement and parent (the chain of checks this replaces
+/// would otherwise run per body and pass; see [`step_kind`], [`fd_step_kind`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum StepKind {
+    /// Revolute (or geared-rotor) joint about `e_x` of an unrotated placement:
+    /// [`plane_revolute_step`] with `K = 0`.
+    PlaneX(PlaneJoint),
+    /// As [`StepKind::PlaneX`] about `e_y` (`K = 1`).
+    PlaneY(PlaneJoint),
+    /// As [`StepKind::PlaneX`] about `e_z` (`K = 2`).
+    PlaneZ(PlaneJoint),
+    /// Fixed joint with a translation-only placement and parent `p`: [`translation_step`].
+    Translation(usize),
+    /// Any other body: the general joint kinematics and child step.
+    General,
+    /// Forward-dynamics pass only: a spin-invariant Harmonic Drive rotor, skipped
+    /// ([`crate::subsystem::axial`]).
+    SkipRotor,
+    /// Forward-dynamics pass only: a roller-screw rotor or nut, of which only its spin or
+    /// travel is recorded ([`super::coupled::axial_motion`]).
+    AxialMotion,
+}
+
+/// Parent `p` and axis scale of a [`StepKind::PlaneX`]-type body.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct PlaneJoint {
+    /// Parent body (`p < i`).
+    pub(crate) parent: usize,
+    /// Axis scale (1, or the gear ratio `N` of a geared rotor (3.1)).
+    pub(crate) scale: f64,
+}
+
+/// [`StepKind`] of body `(i, body)` given its [`Data::plane_axis`] `axis`: the plane and
+/// translation paths need a parent before `i` (true for every model; it lets the compiler
+/// drop bounds checks), the plane path an angular axis (always so for revolute and rotor
+/// joints after `Joint::compile`).
+pub(crate) fn step_kind((i, body): (usize, &Body), axis: Option<usize>) -> StepKind {
+    let parent = body.parent.filter(|&p| p < i);
+    match (&body.joint, axis, parent) {
+        (Joint::Revolute(ax) | Joint::Rotor(ax), Some(k), Some(parent))
+            if ax.kind == SubspaceKind::Angular =>
+        {
+            let j = PlaneJoint {
+                parent,
+                scale: ax.scale,
+            };
+            [
+                StepKind::PlaneX(j),
+                StepKind::PlaneY(j),
+                StepKind::PlaneZ(j),
+            ][k]
+        }
+        (Joint::Fixed, _, Some(p)) if body.placement_x.rot == Matrix3::identity() => {
+            StepKind::Translation(p)
+        }
+        _ => StepKind::General,
+    }
+}
+
+/// [`StepKind`] of a body in the forward-dynamics kinematics pass: its [`step_kind`] `kind`
+/// unless it is an axial member (`Data::axial_member`), whose pose that pass skips.
+pub(crate) fn fd_step_kind(kind: StepKind, member: Option<AxialKind>) -> StepKind {
+    match member {
+        None => kind,
+        Some(AxialKind::Geared) => StepKind::SkipRotor,
+        Some(_) => StepKind::AxialMotion,
+    }
+}
+
+/// The [`StepKind`] the per-pass chain of checks chose for body `i` before the kinds were
+/// precomputed (in the forward-dynamics pass if `fd`): the reference of
+/// [`Data::step_kinds_match_checks`], written as that chain was, independently of
+/// [`step_kind`] and [`fd_step_kind`].
+pub(crate) fn checked_step_kind(model: &Model, data: &Data, i: usize, fd: bool) -> StepKind {
+    let body = &model.bodies[i];
+    match data.axial_member[i].map(|rc| rc.kind) {
+        Some(AxialKind::Geared) if fd => return StepKind::SkipRotor,
+        Some(_) if fd => return StepKind::AxialMotion,
+        _ => {}
+    }
+    if let (Some(k), Some(p), Joint::Revolute(ax) | Joint::Rotor(ax)) =
+        (data.plane_axis[i], body.parent, &body.joint)
+    {
+        if ax.kind == SubspaceKind::Angular && p < i {
+            let j = PlaneJoint {
+                parent: p,
+                scale: ax.scale,
+            };
+            return match k {
+                0 => StepKind::PlaneX(j),
+                1 => StepKind::PlaneY(j),
+                _ => StepKind::PlaneZ(j),
+            };
+        }
+    }
+    if let (Joint::Fixed, Some(p)) = (&body.joint, body.parent) {
+        if p < i && body.placement_x.rot == Matrix3::identity() {
+            return StepKind::Translation(p);
+        }
+    }
+    StepKind::General
+}
+
+/// [`body_kinematics`] of body `(i, model.bodies[i])` by its precomputed `kind` on coordinate
+/// slices (both taken once per pass by the callers, which iterate over the bodies without
+/// bounds checks). The written-out paths of [`super::plane`] need velocities; without them,
+/// and for the forward-dynamics-only kinds, the general step runs (inlined into the passes;
+/// the `p < i` guards, true by construction, let the compiler drop bounds checks on the
+/// parent's entries).
 #[inline(always)]
 pub(crate) fn body_step(
     model: &Model,
     data: &mut Data,
     (i, body): (usize, &Body),
+    kind: StepKind,
     q: &[f64],
     v: Option<&[f64]>,
 ) {
-    if let (Some(k), Some(p), Some(v), Joint::Revolute(ax) | Joint::Rotor(ax)) =
-        (data.plane_axis[i], body.parent, v, &body.joint)
-    {
-        if ax.kind == SubspaceKind::Angular && p < i {
-            let (qi, qd, r) = (q[body.q_index], v[body.v_index], &body.placement_x.trans);
-            match k {
-                0 => plane_revolute_step::<0>(data, i, p, r, ax, qi, qd),
-                1 => plane_revolute_step::<1>(data, i, p, r, ax, qi, qd),
-                _ => plane_revolute_step::<2>(data, i, p, r, ax, qi, qd),
-            }
-            return;
+    let r = &body.placement_x.trans;
+    let at = |v: &[f64]| (q[body.q_index], v[body.v_index]);
+    match (kind, v) {
+        (StepKind::PlaneX(j), Some(v)) if j.parent < i => {
+            plane_revolute_step::<0>(data, i, j.parent, r, j.scale, at(v))
         }
-    }
-    if let (Joint::Fixed, Some(p), Some(_)) = (&body.joint, body.parent, v) {
-        if p < i && body.placement_x.rot == Matrix3::identity() {
-            translation_step(data, i, p, &body.placement_x);
-            return;
+        (StepKind::PlaneY(j), Some(v)) if j.parent < i => {
+            plane_revolute_step::<1>(data, i, j.parent, r, j.scale, at(v))
         }
+        (StepKind::PlaneZ(j), Some(v)) if j.parent < i => {
+            plane_revolute_step::<2>(data, i, j.parent, r, j.scale, at(v))
+        }
+        (StepKind::Translation(p), Some(_)) if p < i => {
+            translation_step(data, i, p, &body.placement_x)
+        }
+        _ => general_body_kinematics(model, data, i, q, v),
     }
-    general_body_kinematics(model, data, i, q, v);
 }
 
 /// [`body_step`] by the general joint kinematics and child step (every joint type).
