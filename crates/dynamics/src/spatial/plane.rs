@@ -2,7 +2,7 @@
 //! revolute joint about a body axis whose placement is a pure translation): for the latter
 //! only the plane normal to the axis mixes (4 instead of 9 multiplications per vector).
 
-use super::{Motion, SpatialTransform};
+use super::{Force, Motion, SpatialTransform};
 use nalgebra::{Matrix3, Vector3};
 
 /// `C m = [A w; A (v + w x r)]` (motion transform, (2.36)) for a transform whose rotation is
@@ -23,10 +23,31 @@ fn motion_by<R: RotationOps>(r: &R, x: &SpatialTransform, m: &Motion) -> Motion 
     Motion::new(r.mul(&m.ang), r.mul(&(m.lin + m.ang.cross(&x.trans))))
 }
 
-/// The products of the first forward recursion with the rotation `A` of a transform.
+/// `C^T f = [A^T n + r x A^T f; A^T f]` (force transform, (2.36)) for a transform whose
+/// rotation is about coordinate axis `axis` (`Some(k)`: plane products) or general (`None`).
+#[inline(always)]
+pub(crate) fn tr_apply_force(x: &SpatialTransform, axis: Option<usize>, f: &Force) -> Force {
+    match axis {
+        Some(0) => force_by(&Plane::<0>(&x.rot), x, f),
+        Some(1) => force_by(&Plane::<1>(&x.rot), x, f),
+        Some(_) => force_by(&Plane::<2>(&x.rot), x, f),
+        None => x.tr_apply_force(f),
+    }
+}
+
+/// [`tr_apply_force`] with the products by `A^T` done by `r`.
+#[inline(always)]
+fn force_by<R: RotationOps>(r: &R, x: &SpatialTransform, f: &Force) -> Force {
+    let lin = r.tr_mul(&f.lin);
+    Force::new(r.tr_mul(&f.ang) + x.trans.cross(&lin), lin)
+}
+
+/// The products of the recursions with the rotation `A` of a transform.
 pub(crate) trait RotationOps {
     /// `A v`.
     fn mul(&self, v: &Vector3<f64>) -> Vector3<f64>;
+    /// `A^T v`.
+    fn tr_mul(&self, v: &Vector3<f64>) -> Vector3<f64>;
     /// `W A^T` (the child's world rotation from the parent's `W`).
     fn compose_tr(&self, w: &Matrix3<f64>) -> Matrix3<f64>;
 }
@@ -43,6 +64,10 @@ impl RotationOps for General<'_> {
         self.0 * v
     }
     #[inline(always)]
+    fn tr_mul(&self, v: &Vector3<f64>) -> Vector3<f64> {
+        self.0.tr_mul(v)
+    }
+    #[inline(always)]
     fn compose_tr(&self, w: &Matrix3<f64>) -> Matrix3<f64> {
         w * self.0.transpose()
     }
@@ -55,6 +80,14 @@ impl<const K: usize> RotationOps for Plane<'_, K> {
         let mut out = *v;
         out[p] = a[(p, p)] * v[p] + a[(p, q)] * v[q];
         out[q] = a[(q, p)] * v[p] + a[(q, q)] * v[q];
+        out
+    }
+    #[inline(always)]
+    fn tr_mul(&self, v: &Vector3<f64>) -> Vector3<f64> {
+        let (a, p, q) = (self.0, (K + 1) % 3, (K + 2) % 3);
+        let mut out = *v;
+        out[p] = a[(p, p)] * v[p] + a[(q, p)] * v[q];
+        out[q] = a[(p, q)] * v[p] + a[(q, q)] * v[q];
         out
     }
     #[inline(always)]
@@ -85,6 +118,7 @@ mod tests {
             .collect();
         let check = |r: &dyn RotationOps, a: &Matrix3<f64>| {
             assert!((r.mul(&v) - a * v).amax() < 1e-15);
+            assert!((r.tr_mul(&v) - a.transpose() * v).amax() < 1e-15);
             assert!((r.compose_tr(&w) - w * a.transpose()).amax() < 1e-15);
         };
         check(&Plane::<0>(&a[0]), &a[0]);
@@ -93,10 +127,12 @@ mod tests {
         check(&General(&a[1]), &a[1]);
     }
 
-    /// The plane motion transform against the general one, for each axis and `None`.
+    /// The plane motion and force transforms against the general ones, for each axis and
+    /// `None`.
     #[test]
-    fn plane_motion_transform_matches_general() {
+    fn plane_transforms_match_general() {
         let m = Motion::new(Vector3::new(0.7, -0.2, 1.3), Vector3::new(-0.4, 0.9, 0.25));
+        let f = Force::new(Vector3::new(-0.6, 0.1, 0.8), Vector3::new(0.35, -1.2, 0.45));
         let r = Vector3::new(0.2, -0.5, 0.3);
         let axes = [Vector3::x_axis(), Vector3::y_axis(), Vector3::z_axis()];
         for (k, ax) in axes.iter().enumerate() {
@@ -106,6 +142,10 @@ mod tests {
             assert!((fast.ang - general.ang).amax() < 1e-15);
             assert!((fast.lin - general.lin).amax() < 1e-15);
             assert_eq!(apply_motion(&x, None, &m), general);
+            let (fast, general) = (tr_apply_force(&x, Some(k), &f), x.tr_apply_force(&f));
+            assert!((fast.ang - general.ang).amax() < 1e-15);
+            assert!((fast.lin - general.lin).amax() < 1e-15);
+            assert_eq!(tr_apply_force(&x, None, &f), general);
         }
     }
 }

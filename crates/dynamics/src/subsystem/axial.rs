@@ -37,7 +37,7 @@ use crate::mechanism::knee::{KneeCoupling, KneePart};
 use crate::model::coupling::Mechanism;
 use crate::model::JointModel;
 use crate::spatial::{
-    skew, sym_congruence, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform,
+    sym_congruence, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform,
 };
 use crate::Model;
 use nalgebra::{Matrix3, Vector3};
@@ -62,7 +62,7 @@ pub(crate) struct AxialMember {
     /// How the member follows the coordinates (and what `s` is per unit of).
     pub(crate) kind: AxialKind,
     /// `K = C^T M C` in the sub-system parent's frame (rotors; a slider's varies with its
-    /// travel, [`Self::congruence_at`]).
+    /// travel: [`crate::subsystem::rigid::RigidSum::at`] its CoM from [`Self::state`]).
     pub(crate) congruence: ArticulatedInertia,
     /// Column of the rotor's coordinate within the sub-system ([`AxialKind::Geared`]).
     pub(crate) column: usize,
@@ -133,23 +133,6 @@ impl AxialMember {
             AxialKind::Screw => (self.com, m.speed, m.bias),
             AxialKind::Slider => (self.com + self.s.lin * m.travel, m.speed, m.bias),
         }
-    }
-
-    /// `K`, `K s` and `s^T K s` with the CoM at `c` (from [`Self::state`]); only a slider's
-    /// `K` depends on it.
-    #[inline(always)]
-    pub(crate) fn congruence_at(&self, c: &Vector3<f64>) -> (ArticulatedInertia, Force, f64) {
-        if self.kind != AxialKind::Slider {
-            return (self.congruence, self.ks, self.sks);
-        }
-        // The rigid inertia (m, c, I_c) about the parent origin, (2.22).
-        let h = c * self.mass;
-        let k = ArticulatedInertia {
-            ang: self.inertia_com + Matrix3::identity() * c.dot(&h) - h * c.transpose(),
-            cross: skew(&h),
-            lin: Matrix3::identity() * self.mass,
-        };
-        (k, self.ks, self.sks)
     }
 }
 

@@ -123,8 +123,8 @@ pub(crate) fn backward(
     let hat_f = m.apply(&data.bias_acc[link]) - data.fbar[link];
     let d = ax.dot_force(&u) + lr.sks;
     crate::check::positive_pivot(vi, d)?;
-    let x = &data.x[link];
-    let b = x.tr_apply_force(&u) + lr.ks;
+    let (x, axis) = (&data.x[link], data.plane_axis[link]);
+    let b = plane::tr_apply_force(x, axis, &u) + lr.ks;
     let dinv = 1.0 / d;
     let p = (rhs - ax.dot_force(&hat_f)) * dinv;
     data.u[link] = b;
@@ -133,7 +133,7 @@ pub(crate) fn backward(
     let Some(parent) = lr.parent else {
         return Ok(());
     };
-    let k = x.tr_apply_force(&hat_f) + h + b * p;
+    let k = plane::tr_apply_force(x, axis, &hat_f) + h + b * p;
     let (head, tail) = data.mbar.split_at_mut(link);
     let (m, out) = (&tail[0], &mut head[parent]);
     // The rotors' sum K is in the parent's `mbar_init`.
@@ -141,7 +141,7 @@ pub(crate) fn backward(
         add_rigid_congruence(&model.bodies[link].inertia, x, out);
         out.sub_outer(&b, dinv);
     } else {
-        m.add_tr_transform_sub_outer_to(data.plane_axis[link], x, (&b, dinv), out);
+        m.add_tr_transform_sub_outer_to(axis, x, (&b, dinv), out);
     }
     data.fbar[parent] -= k;
     Ok(())

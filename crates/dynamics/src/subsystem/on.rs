@@ -13,7 +13,7 @@
 use super::axial::{AxialKind, Carried};
 use super::chol::{cholesky, solve};
 pub(crate) use super::rigid::add_rigid_congruence;
-use super::rigid::Axisymmetric;
+use super::rigid::{Axisymmetric, RigidSum};
 use super::MAX_SUBSYSTEM_DOF as MAX;
 use crate::kinematics::joint_column;
 use crate::spatial::{ArticulatedInertia, Force, Motion, SpatialTransform};
@@ -131,7 +131,8 @@ fn backward_n<const N: usize>(
     for (r, &v) in rhs.iter_mut().zip(&sub.v_set) {
         *r = tau[v];
     }
-    let mut kc = ArticulatedInertia::zero();
+    // K_S's congruences: rigid ones summed compactly, added to `kc` once at the end.
+    let (mut kc, mut rigid_kc) = (ArticulatedInertia::zero(), RigidSum::zero());
     let mut fc = Force::zero();
     let kinds = sub.rigid_member.iter().zip(&sub.axisymmetric_member);
     for (m, (&j, (&rigid, &axisymmetric))) in sub.members.iter().zip(kinds).enumerate() {
@@ -153,7 +154,7 @@ fn backward_n<const N: usize>(
                 }
                 // Column c of J-hat is s rho_c (see `super::axial`).
                 AxialKind::Screw | AxialKind::Slider => {
-                    let (k, ks, sks) = rc.congruence_at(&rc.state(data, j).0);
+                    let (ks, sks) = (rc.ks, rc.sks);
                     let (row, cols) = (&data.axial_motion[j].row, &sub.columns[m]);
                     let inputs = model.bodies[j].v_set.len().min(row.len());
                     for a in 0..inputs {
@@ -167,7 +168,9 @@ fn backward_n<const N: usize>(
                         }
                     }
                     if rc.kind == AxialKind::Slider {
-                        kc += k; // A rotor's constant K is in `mbar_init`.
+                        // Its K moves with its CoM; a rotor's constant K is in `mbar_init`.
+                        let c = rc.state(data, j).0;
+                        rigid_kc += RigidSum::at(rc.mass, &c, &rc.inertia_com);
                     }
                 }
             }
@@ -201,7 +204,7 @@ fn backward_n<const N: usize>(
         }
         if sub.parent.is_some() {
             if rigid {
-                add_rigid_congruence(inertia, cj, &mut kc);
+                rigid_kc += RigidSum::congruence(inertia, cj);
             } else if let (Some(k), true) =
                 (data.plane_axis[j], model.bodies[j].parent == sub.parent)
             {
@@ -213,6 +216,7 @@ fn backward_n<const N: usize>(
             fc += cj.tr_apply_force(&hat_f);
         }
     }
+    rigid_kc.add_to(&mut kc);
     cholesky(&mut ms, n, &sub.v_set)?;
     solve(&ms, n, &mut rhs);
     for r in 0..n {

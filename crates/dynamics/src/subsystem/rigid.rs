@@ -1,41 +1,96 @@
 //! Congruence `C^T M C` of a rigid member (the `C-hat^T M-hat C-hat` term of (2.76) for a
 //! member without children outside its sub-system, whose `M-hat_j` is still the rigid-body
-//! `M_j` of (2.22)), shared by the generic, link-with-rotors and rotor-constant steps.
+//! `M_j` of (2.22)), shared by the generic, link-with-rotors and rotor-constant steps, and
+//! the compact sum of such inertias the loop sub-systems accumulate `K_S` in.
 
 use crate::spatial::{
-    skew, sym_congruence, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform,
+    sym_congruence, ArticulatedInertia, Force, Motion, RigidInertia, SpatialTransform,
 };
 use nalgebra::{Matrix3, Vector3};
 
 /// `out += C^T M C` for a rigid-body inertia `M` (the `C-hat^T M-hat C-hat` term of (2.76) for
-/// a member without children outside, whose `M-hat_j` is still `M_j`): in parent axes the
-/// CoM is `c = A^T c_j + r`, and `C^T M C = [I_c' + m (|c|^2 E - c c^T), m c~; -m c~, m E]`
-/// with `I_c' = A^T I_c A`, formed by [`axisymmetric_inertia`] when it applies.
+/// a member without children outside, whose `M-hat_j` is still `M_j`), see
+/// [`RigidSum::congruence`].
 #[inline]
 pub(crate) fn add_rigid_congruence(
     inertia: &RigidInertia,
     x: &SpatialTransform,
     out: &mut ArticulatedInertia,
 ) {
-    let m = inertia.mass();
-    let (c, ic) = (inertia.com(), inertia.inertia_about_com());
-    let (c, mut ang) = match axisymmetric_inertia(&c, &ic, &x.rot) {
-        Some((z, ang)) => (z * c.z + x.trans, ang),
-        None => (x.rot.tr_mul(&c) + x.trans, sym_congruence(&ic, &x.rot)),
-    };
-    let mc = c * m;
-    let diag = mc.dot(&c);
-    for i in 0..3 {
-        ang[(i, i)] += diag - mc[i] * c[i];
-        for k in i + 1..3 {
-            let o = mc[i] * c[k];
-            ang[(i, k)] -= o;
-            ang[(k, i)] -= o;
+    RigidSum::congruence(inertia, x).add_to(out);
+}
+
+/// A rigid-body inertia (2.22) or a sum of them in one frame, compact: mass `m`, first moment
+/// `h` and inertia `I_O` about the origin (13 numbers to add per body instead of 27).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RigidSum {
+    /// Mass `m`.
+    m: f64,
+    /// First moment `h = m c`.
+    h: Vector3<f64>,
+    /// `I_O = I_c + m (|c|^2 E - c c^T)`.
+    io: Matrix3<f64>,
+}
+
+impl RigidSum {
+    /// The empty sum.
+    #[inline]
+    pub(crate) fn zero() -> Self {
+        Self {
+            m: 0.0,
+            h: Vector3::zeros(),
+            io: Matrix3::zeros(),
         }
     }
-    out.ang += ang;
-    out.cross += skew(&mc);
-    out.lin += Matrix3::from_diagonal_element(m);
+
+    /// A body of mass `m` with CoM `c` and inertia `ic` about it, both in this frame.
+    #[inline]
+    pub(crate) fn at(m: f64, c: &Vector3<f64>, ic: &Matrix3<f64>) -> Self {
+        let (mc, mut io) = (c * m, *ic);
+        let diag = mc.dot(c);
+        for i in 0..3 {
+            io[(i, i)] += diag - mc[i] * c[i];
+            for k in i + 1..3 {
+                let o = mc[i] * c[k];
+                io[(i, k)] -= o;
+                io[(k, i)] -= o;
+            }
+        }
+        Self { m, h: mc, io }
+    }
+
+    /// `C^T M C` of a rigid-body inertia `M`: in parent axes the CoM is `c = A^T c_j + r` and
+    /// the inertia about it `I_c' = A^T I_c A`, formed by [`axisymmetric_inertia`] when it
+    /// applies.
+    #[inline]
+    pub(crate) fn congruence(inertia: &RigidInertia, x: &SpatialTransform) -> Self {
+        let (c, ic) = (inertia.com(), inertia.inertia_about_com());
+        let (c, ang) = match axisymmetric_inertia(&c, &ic, &x.rot) {
+            Some((z, ang)) => (z * c.z + x.trans, ang),
+            None => (x.rot.tr_mul(&c) + x.trans, sym_congruence(&ic, &x.rot)),
+        };
+        Self::at(inertia.mass(), &c, &ang)
+    }
+
+    /// `out += [I_O, h~; -h~, m E]` (only the nonzero entries of `h~` and `m E`).
+    #[inline]
+    pub(crate) fn add_to(&self, out: &mut ArticulatedInertia) {
+        out.ang += self.io;
+        for (i, k, h) in [(1, 2, self.h.x), (2, 0, self.h.y), (0, 1, self.h.z)] {
+            out.cross[(i, k)] -= h;
+            out.cross[(k, i)] += h;
+            out.lin[(i, i)] += self.m;
+        }
+    }
+}
+
+impl std::ops::AddAssign for RigidSum {
+    #[inline]
+    fn add_assign(&mut self, rhs: Self) {
+        self.m += rhs.m;
+        self.h += rhs.h;
+        self.io += rhs.io;
+    }
 }
 
 /// True if a body with CoM `c` and inertia `ic` about it (own frame) is axisymmetric about its
@@ -157,6 +212,23 @@ mod tests {
             assert!((acc.to_matrix() - expect).amax() < 1e-12 * expect.amax());
             assert_eq!(acc.ang, acc.ang.transpose());
         }
+    }
+
+    /// A compact sum of a body placed by `at` and a congruence against the dense inertias.
+    #[test]
+    fn rigid_sum_matches_dense() {
+        let ic = Matrix3::new(0.3, 0.01, -0.02, 0.01, 0.2, 0.03, -0.02, 0.03, 0.25);
+        let c = Vector3::new(0.1, -0.2, 0.05);
+        let placed = RigidInertia::new(2.5, c, ic).expect("valid");
+        let pose = Isometry3::new(Vector3::new(0.3, -0.1, 0.7), Vector3::new(0.9, -0.4, 1.2));
+        let x = SpatialTransform::from_pose(&pose);
+        let mut sum = RigidSum::at(2.5, &c, &ic);
+        sum += RigidSum::congruence(&placed, &x);
+        let mut out = ArticulatedInertia::zero();
+        sum.add_to(&mut out);
+        let dense = x.to_matrix().transpose() * placed.to_matrix() * x.to_matrix();
+        let expect = placed.to_matrix() + dense;
+        assert!((out.to_matrix() - expect).amax() < 1e-12 * expect.amax());
     }
 
     /// The axisymmetric `M s` against the general rigid-body product, and the predicate.

@@ -18,13 +18,12 @@ pub(super) fn six_dof_backward(
     tau: &DVector<f64>,
     (propagate, free): (bool, bool),
 ) -> Result<Force, DynamicsError> {
-    let j = data.jacobian6[i];
-    let (u, d) = if free {
-        free_joint_products(&data.mbar[i])
-    } else {
-        let u = data.mbar[i].to_matrix() * j;
-        let d = j.tr_mul(&u);
-        (u, d)
+    let j = &data.jacobian6[i];
+    // `U = M-bar J`: a product only for a general `J`, else built below and only if needed.
+    let mbar_j = (!free).then(|| data.mbar[i].to_matrix() * j);
+    let d = match &mbar_j {
+        Some(u) => j.tr_mul(u),
+        None => free_joint_d(&data.mbar[i]),
     };
     let l = cholesky6(&d, vi)?;
     let hat_f = data.mbar[i].apply(&data.bias_acc[i]) - data.fbar[i];
@@ -37,9 +36,10 @@ pub(super) fn six_dof_backward(
     let p = cholesky6_solve(&l, rhs);
     data.p6[i] = p;
     if !propagate {
-        data.pi6[i] = Matrix6::zeros();
+        // `pi6[i]` stays unset: the second forward step reads it only for a joint with parent.
         return Ok(Force::zero());
     }
+    let u = mbar_j.unwrap_or_else(|| free_joint_u(&data.mbar[i]));
     let mut pi = u.transpose();
     for c in 0..6 {
         let x = cholesky6_solve(&l, pi.column(c).into_owned());
@@ -97,21 +97,28 @@ fn cholesky6_solve((l, inv): &(Matrix6<f64>, [f64; 6]), mut b: Vector6<f64>) -> 
     b
 }
 
-/// `U = M-bar J` and `D = J^T M-bar J` for the free joint's constant `J = [0 E; E 0]`
+/// `U = M-bar J` for the free joint's constant `J = [0 E; E 0]`
 /// ([`crate::model::joint::quaternion_jacobian`]): with `M-bar = [A B; B^T C]`,
-/// `U = [B A; C B^T]` and `D = [C B^T; B A]` (block permutations, no products).
-fn free_joint_products(m: &ArticulatedInertia) -> (Matrix6<f64>, Matrix6<f64>) {
-    let (mut u, mut d) = (Matrix6::zeros(), Matrix6::zeros());
-    let bt = m.cross.transpose();
+/// `U = [B A; C B^T]` (a block permutation, no products).
+fn free_joint_u(m: &ArticulatedInertia) -> Matrix6<f64> {
+    let mut u = Matrix6::zeros();
     u.fixed_view_mut::<3, 3>(0, 0).copy_from(&m.cross);
     u.fixed_view_mut::<3, 3>(0, 3).copy_from(&m.ang);
     u.fixed_view_mut::<3, 3>(3, 0).copy_from(&m.lin);
-    u.fixed_view_mut::<3, 3>(3, 3).copy_from(&bt);
+    u.fixed_view_mut::<3, 3>(3, 3)
+        .copy_from(&m.cross.transpose());
+    u
+}
+
+/// `D = J^T M-bar J = [C B^T; B A]` for the free joint (see [`free_joint_u`]).
+fn free_joint_d(m: &ArticulatedInertia) -> Matrix6<f64> {
+    let mut d = Matrix6::zeros();
     d.fixed_view_mut::<3, 3>(0, 0).copy_from(&m.lin);
-    d.fixed_view_mut::<3, 3>(0, 3).copy_from(&bt);
+    d.fixed_view_mut::<3, 3>(0, 3)
+        .copy_from(&m.cross.transpose());
     d.fixed_view_mut::<3, 3>(3, 0).copy_from(&m.cross);
     d.fixed_view_mut::<3, 3>(3, 3).copy_from(&m.ang);
-    (u, d)
+    d
 }
 
 /// `J^T f = [f_lin; f_ang]` for the free joint's constant `J = [0 E; E 0]` (a permutation).
@@ -180,9 +187,8 @@ mod tests {
         });
         let m = ArticulatedInertia::from_matrix(&(l * l.transpose()));
         let (j, dense) = (quaternion_jacobian(), m.to_matrix());
-        let (u, d) = free_joint_products(&m);
-        assert_eq!(u, dense * j);
-        assert_eq!(d, j.transpose() * dense * j);
+        assert_eq!(free_joint_u(&m), dense * j);
+        assert_eq!(free_joint_d(&m), j.transpose() * dense * j);
         let w = Vector6::new(0.3, -1.2, 0.7, 2.1, -0.4, 0.05);
         assert_eq!(free_tr_mul(&Force::from_vector(&w)), j.transpose() * w);
     }
