@@ -240,3 +240,27 @@ fn lola_motor_rows_match_finite_differences_of_the_rotor_pose() {
     }
     assert_eq!(rotors, 6, "2 knee and 4 ankle screw rotors");
 }
+
+#[test]
+fn a_motor_coordinate_out_of_range_is_an_error() {
+    let a = Actuator {
+        name: "spin".into(),
+        joint_q: 0,
+        joint_v: 0,
+        transmission: Transmission::Elastic {
+            motor_q: 0,
+            motor_v: 5,
+            ratio: N,
+        },
+        motor: MotorParams::default(),
+        friction: FrictionParams::default(),
+        nominal_ratio: N,
+        effort: f64::INFINITY,
+        velocity: f64::INFINITY,
+    };
+    let r = Plant::new(spinner(), vec![a], &[], vec![], PlantConfig::default());
+    assert!(matches!(
+        r,
+        Err(biped_sim::error::SimError::InvalidParameter { .. })
+    ));
+}

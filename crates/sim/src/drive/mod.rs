@@ -172,9 +172,80 @@ impl FrictionParams {
     }
 
     /// Friction torque opposing the motor speed `omega` while transmitting `tau_m`.
-    #[inline]
     pub fn torque(&self, omega: f64, tau_m: f64) -> f64 {
-        let coulomb = self.coulomb + (1.0 - self.efficiency) * tau_m.abs();
-        self.viscous * omega + coulomb * tanh::tanh(omega / self.smoothing)
+        let law = FrictionLaw::from(self);
+        law.torque(omega, law.level(tau_m))
+    }
+}
+
+/// [`FrictionParams`] prepared for repeated evaluation: the loss factor `1 - eta` and the
+/// reciprocal smoothing speed `1 / omega_eps` (no division on the right-hand side's dependency
+/// chain). Built from the parameters (the plant builds one per actuator with the plant and never
+/// changes its actuators afterwards), so it cannot disagree with them.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct FrictionLaw {
+    /// Viscous coefficient `d`.
+    viscous: f64,
+    /// Coulomb torque `tau_c`.
+    coulomb: f64,
+    /// Efficiency loss `1 - eta`.
+    loss: f64,
+    /// `1 / omega_eps`.
+    inv_smoothing: f64,
+}
+
+impl From<&FrictionParams> for FrictionLaw {
+    fn from(p: &FrictionParams) -> Self {
+        Self {
+            viscous: p.viscous,
+            coulomb: p.coulomb,
+            loss: 1.0 - p.efficiency,
+            inv_smoothing: 1.0 / p.smoothing,
+        }
+    }
+}
+
+impl FrictionLaw {
+    /// Coulomb level `tau_c + (1 - eta) |tau_m|` while transmitting the motor torque `tau_m`.
+    #[inline]
+    pub fn level(&self, tau_m: f64) -> f64 {
+        self.coulomb + self.loss * tau_m.abs()
+    }
+
+    /// Friction torque `d omega + level tanh(omega / omega_eps)` opposing the motor speed
+    /// `omega` at the Coulomb level `level` ([`Self::level`]).
+    #[inline]
+    pub fn torque(&self, omega: f64, level: f64) -> f64 {
+        self.viscous * omega + level * tanh::tanh(omega * self.inv_smoothing)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The prepared law equals the friction formula of the module docs (with the division
+        /// by `omega_eps`) up to rounding, over valid parameters, speeds and torques.
+        #[test]
+        fn prepared_law_matches_the_formula(
+            viscous in 0.0f64..1.0,
+            coulomb in 0.0f64..1.0,
+            smoothing in 1e-3f64..10.0,
+            efficiency in 1e-3f64..=1.0,
+            omega in -100.0f64..100.0,
+            tau_m in -50.0f64..50.0,
+        ) {
+            let p = FrictionParams { viscous, coulomb, smoothing, efficiency };
+            prop_assert!(p.validate().is_ok());
+            let formula = viscous * omega
+                + (coulomb + (1.0 - efficiency) * tau_m.abs()) * (omega / smoothing).tanh();
+            let law = FrictionLaw::from(&p);
+            let scale = viscous * omega.abs() + coulomb + tau_m.abs();
+            for got in [p.torque(omega, tau_m), law.torque(omega, law.level(tau_m))] {
+                prop_assert!((got - formula).abs() <= 1e-14 * scale, "{got} vs {formula}");
+            }
+        }
     }
 }

@@ -99,23 +99,30 @@ impl Plant {
 
     /// Drive torques of every actuator, elastic gear torques and the passive joint layer
     /// (end stops, joint friction) into `tau`; current rates into
-    /// `zdot` in voltage mode. Motor rows of roller-screw rotors are refreshed at `q` by
+    /// `zdot` in voltage mode. `tau` starts from the direct forces of the held commands and
+    /// each drive adds its motor-row forces from its hold ([`crate::drive::Actuator::forces`];
+    /// in voltage mode the hold is redone at the state's current first). Motor rows of
+    /// roller-screw rotors are refreshed at `q` by
     /// [`crate::drive::Actuator::motor_row_cached`]: a cache hit after the kinematics pass of a
     /// right-hand side, one closed-form loop closure otherwise (always correct for `q`).
     fn drive_forces(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
         let l = self.layout;
         let (q, v) = (self.q.as_slice(), self.v.as_slice());
         let tau = self.tau.as_mut_slice();
-        tau.fill(0.0);
+        tau.copy_from_slice(&self.tau_held);
         let mode = self.config.mode;
         let voltage = mode == DriveMode::Voltage;
         let currents = l.currents().start;
-        for (k, a) in self.actuators.iter().enumerate() {
+        let held = self.holds.iter_mut().zip(&self.laws).zip(&self.commands);
+        let drives = self.actuators.iter().zip(self.rows.iter_mut()).zip(held);
+        for (k, ((a, row), ((hold, law), &cmd))) in drives.enumerate() {
             if a.row_varies() {
-                a.refresh_motor_row(&self.model, &self.data, q, &mut self.rows[k])?;
+                a.refresh_motor_row(&self.model, &self.data, q, row)?;
             }
-            let i = if voltage { z[currents + k] } else { 0.0 };
-            let ds = a.apply(self.rows[k].as_ref(), mode, self.commands[k], i, v, tau);
+            if voltage {
+                *hold = a.hold(law, mode, cmd, z[currents + k], row.is_some());
+            }
+            let ds = a.forces(hold, law, row.as_ref(), v, tau);
             if voltage {
                 zdot[currents + k] = ds.current_rate;
             }

@@ -26,8 +26,8 @@ pub use layout::StateLayout;
 
 use crate::contact::{ContactOutput, ContactParams, ContactSet, FootSpec};
 use crate::controller::Commands;
-use crate::drive::actuator::{DriveState, MotorRow};
-use crate::drive::{Actuator, DriveMode, FrictionParams, MotorParams};
+use crate::drive::actuator::{DriveHold, DriveState, MotorRow};
+use crate::drive::{Actuator, DriveMode, FrictionLaw, FrictionParams, MotorParams};
 use crate::error::{finite, SimError};
 use crate::ode::{OdeSystem, SplitSystem};
 use crate::passive::{JointSpec, PassiveJoints, PassiveParams};
@@ -115,6 +115,14 @@ pub struct Plant {
     fext: Vec<Wrench>,
     /// Motor-rate rows: constant ones from [`Plant::new`], roller-screw rows per evaluation.
     rows: Vec<Option<MotorRow>>,
+    /// Each actuator's friction prepared once ([`FrictionLaw::from`]; the actuators never
+    /// change after [`Plant::new`]).
+    laws: Vec<FrictionLaw>,
+    /// Each actuator's [`Actuator::hold`] of the held command, refreshed whenever the command
+    /// changes (and per evaluation at the current state in voltage mode).
+    holds: Vec<DriveHold>,
+    /// The direct forces of `holds` in `v` coordinates: the start of every evaluation's `tau`.
+    tau_held: Vec<f64>,
     out: PlantOutputs,
     scratch: Vec<f64>,
     /// Contact result of the last state pass for the next right-hand side at that state.
@@ -178,7 +186,23 @@ impl Plant {
             .iter()
             .map(|a| a.motor_row(&model, q0.as_slice()))
             .collect::<Result<Vec<_>, _>>()?;
-        Ok(Self {
+        if let Some(a) = actuators.iter().zip(&rows).find_map(|(a, row)| {
+            let bad = row
+                .iter()
+                .flat_map(MotorRow::entries)
+                .any(|(i, _)| i >= model.nv());
+            bad.then_some(a)
+        }) {
+            return Err(SimError::InvalidParameter {
+                what: format!("actuator `{}`", a.name),
+                reason: "motor coordinate out of range".into(),
+            });
+        }
+        let laws = actuators
+            .iter()
+            .map(|a| FrictionLaw::from(&a.friction))
+            .collect();
+        let mut plant = Self {
             data,
             gear_damping,
             qdot: QdotMap::new(&model),
@@ -187,6 +211,9 @@ impl Plant {
             tau: DVector::zeros(model.nv()),
             fext: vec![Wrench::zero(); model.nbodies()],
             rows,
+            laws,
+            holds: vec![DriveHold::default(); actuators.len()],
+            tau_held: vec![0.0; model.nv()],
             commands: vec![0.0; actuators.len()],
             model,
             config,
@@ -199,7 +226,21 @@ impl Plant {
             contact_memo: forces::ContactMemo::default(),
             passive: PassiveJoints::default(),
             rhs_count: 0,
-        })
+        };
+        plant.hold_drives();
+        Ok(plant)
+    }
+
+    /// Refreshes the drives' [`Actuator::hold`] of the held commands (zero currents in voltage
+    /// mode: each evaluation redoes them at its state) and their direct forces `tau_held`.
+    fn hold_drives(&mut self) {
+        let mode = self.config.mode;
+        self.tau_held.fill(0.0);
+        let drives = self.actuators.iter().zip(&self.laws).zip(&self.rows);
+        for ((h, &cmd), ((a, law), row)) in self.holds.iter_mut().zip(&self.commands).zip(drives) {
+            *h = a.hold(law, mode, cmd, 0.0, row.is_some());
+            self.tau_held[h.index] += h.direct;
+        }
     }
 
     /// This plant with the end stops and joint friction of `specs`, built by
@@ -263,6 +304,14 @@ impl Plant {
 
     /// Holds `c` as the input until the next call (checks kind, length and finiteness).
     pub fn set_commands(&mut self, c: &Commands) -> Result<(), SimError> {
+        self.store_commands(c)?;
+        self.hold_drives();
+        Ok(())
+    }
+
+    /// Checks kind, length and finiteness of `c` and copies its values into the held command
+    /// (the drives' holds still to refresh).
+    fn store_commands(&mut self, c: &Commands) -> Result<(), SimError> {
         if c.mode != self.config.mode {
             return Err(SimError::CommandKind {
                 got: c.mode,
@@ -297,12 +346,13 @@ impl Plant {
                 expected: self.layout.dim(),
             });
         }
-        self.set_commands(c)?;
+        self.store_commands(c)?;
         let v = &z[self.layout.v()];
         let held = self.commands.iter_mut().zip(&self.rows);
         for (a, (cmd, row)) in self.actuators.iter().zip(held) {
             *cmd = a.limit(c.mode, *cmd, v[a.joint_v], row.is_some());
         }
+        self.hold_drives();
         Ok(())
     }
 
