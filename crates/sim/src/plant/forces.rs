@@ -94,7 +94,7 @@ impl Plant {
         let (s, sdot) = (&z[l.contact()], &mut zdot[l.contact()]);
         let out = &mut self.out.contact;
         self.contact.evaluate(q, v, s, sdot, &mut self.fext, out);
-        self.drive_forces(z, zdot)
+        self.drive_forces(z, zdot, false)
     }
 
     /// Drive torques of every actuator, elastic gear torques and the passive joint layer
@@ -104,8 +104,15 @@ impl Plant {
     /// in voltage mode the hold is redone at the state's current first). Motor rows of
     /// roller-screw rotors are refreshed at `q` by
     /// [`crate::drive::Actuator::motor_row_cached`]: a cache hit after the kinematics pass of a
-    /// right-hand side, one closed-form loop closure otherwise (always correct for `q`).
-    fn drive_forces(&mut self, z: &[f64], zdot: &mut [f64]) -> Result<(), SimError> {
+    /// right-hand side, one closed-form loop closure otherwise (always correct for `q`), unless
+    /// `rows_at_q`: the last pass was the state pass at this `q` (a [`ContactMemo`] hit), whose
+    /// rows are still in place.
+    fn drive_forces(
+        &mut self,
+        z: &[f64],
+        zdot: &mut [f64],
+        rows_at_q: bool,
+    ) -> Result<(), SimError> {
         let l = self.layout;
         let (q, v) = (self.q.as_slice(), self.v.as_slice());
         let tau = self.tau.as_mut_slice();
@@ -116,7 +123,7 @@ impl Plant {
         let held = self.holds.iter_mut().zip(&self.laws).zip(&self.commands);
         let drives = self.actuators.iter().zip(self.rows.iter_mut()).zip(held);
         for (k, ((a, row), ((hold, law), &cmd))) in drives.enumerate() {
-            if a.row_varies() {
+            if a.row_varies() && !rows_at_q {
                 a.refresh_motor_row(&self.model, &self.data, q, row)?;
             }
             if voltage {
@@ -147,12 +154,13 @@ impl Plant {
         let l = self.layout;
         forward_dynamics_kinematics(&self.model, &mut self.data, &self.q, &self.v)?;
         let (s, sdot) = (&z[l.contact()], &mut zdot[l.contact()]);
-        if !self.contact_memo.recall(l, z, sdot) {
+        let recalled = self.contact_memo.recall(l, z, sdot);
+        if !recalled {
             let out = &mut self.out.contact;
             self.contact
                 .evaluate_from(&self.data, s, sdot, &mut self.fext, out);
         }
-        self.drive_forces(z, zdot)
+        self.drive_forces(z, zdot, recalled)
     }
 
     /// The right-hand side with typed errors (one kinematics pass, see the module docs).
@@ -174,7 +182,8 @@ impl Plant {
 /// The contact layer's result at the last state pass ([`Plant::state_outputs`]), recalled by
 /// the next right-hand side at bitwise the same `q`, `v` and bristle states (the first
 /// Runge-Kutta stage after a sensor sample) instead of evaluating the 16 points again. Its
-/// forces are still in the plant's `fext` and outputs: every other writer of them clears it.
+/// forces are still in the plant's `fext` and outputs, and its roller-screw motor rows in the
+/// plant's rows: every other writer of them clears it.
 #[derive(Debug, Clone, Default)]
 pub(super) struct ContactMemo {
     /// `[q | v | s]` of the state pass; empty when cleared.
