@@ -1,6 +1,6 @@
 //! Preallocated per-call workspace (model/data split): every recursion writes here.
 
-use crate::kinematics::{checked_step_kind, fd_step_kind, step_kind, StepKind};
+use crate::kinematics::{fd_step_kind, step_kind, StepKind};
 use crate::mechanism::ankle::AnkleLoop;
 use crate::mechanism::knee::KneeLoopCache;
 use crate::mechanism::{AxialMotion, MechanismError};
@@ -298,17 +298,6 @@ impl Data {
             nle: DVector::zeros(nv),
             factor: DMatrix::zeros(nv, nv),
         }
-    }
-
-    /// True if the precomputed kinematics step kinds of every body of `model` (this
-    /// workspace's model) are those the per-pass chain of checks they replace would choose,
-    /// in the general and the forward-dynamics passes (a test hook for models of any crate).
-    #[doc(hidden)]
-    pub fn step_kinds_match_checks(&self, model: &Model) -> bool {
-        (0..model.nbodies()).all(|i| {
-            self.step_kind[i] == checked_step_kind(model, self, i, false)
-                && self.fd_step_kind[i] == checked_step_kind(model, self, i, true)
-        })
     }
 
     /// Number of bodies this workspace was sized for.
