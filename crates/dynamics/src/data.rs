@@ -1,5 +1,6 @@
 //! Preallocated per-call workspace (model/data split): every recursion writes here.
 
+use crate::centroidal::MomentumTable;
 use crate::kinematics::{fd_step_kind, step_kind, StepKind};
 use crate::mechanism::ankle::AnkleLoop;
 use crate::mechanism::knee::KneeLoopCache;
@@ -117,6 +118,8 @@ pub struct Data {
     /// Per body: how the forward-dynamics kinematics pass steps it (axial members skipped or
     /// reduced to their spin or travel, [`crate::kinematics::fd_step_kind`]).
     pub(crate) fd_step_kind: Vec<StepKind>,
+    /// Constants of the centroidal momentum sum ([`crate::centroidal_momentum_current`]).
+    pub(crate) momentum_table: MomentumTable,
     /// Per body: the joint placement is the identity, so a coupled part's `C` is its relative
     /// pose alone (no placement products in the kinematics).
     pub(crate) unplaced: Vec<bool>,
@@ -273,6 +276,7 @@ impl Data {
             sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
             link_rotors: link_rotor_subsystems(model, &axial_member),
+            momentum_table: MomentumTable::new(model, &axial_member),
             mbar_init: mbar_init(model, &axial_member, &massless_leaf),
             massless_leaf,
             axial_members: (axial_member.iter().enumerate())
