@@ -17,7 +17,9 @@ fn linear_momentum_is_mass_times_com_rate() {
             let (q, v) = lm.random_state(&mut |a, b| rng.random_range(a..b));
             let mut com_at = |s: f64| {
                 let qs = integrate(m, &q, &v, s).expect("integrates");
-                centroidal_momentum(m, &mut data, &qs, &v).expect("momentum").com
+                centroidal_momentum(m, &mut data, &qs, &v)
+                    .expect("momentum")
+                    .com
             };
             let h = 1e-6;
             let rate = (com_at(h) - com_at(-h)) / (2.0 * h);
