@@ -1,6 +1,7 @@
 //! Preallocated per-call workspace (model/data split): every recursion writes here.
 
-use crate::kinematics::{checked_step_kind, fd_step_kind, step_kind, StepKind};
+use crate::centroidal::MomentumTable;
+use crate::kinematics::{fd_step_kind, step_kind, StepKind};
 use crate::mechanism::ankle::AnkleLoop;
 use crate::mechanism::knee::KneeLoopCache;
 use crate::mechanism::{AxialMotion, MechanismError};
@@ -117,6 +118,8 @@ pub struct Data {
     /// Per body: how the forward-dynamics kinematics pass steps it (axial members skipped or
     /// reduced to their spin or travel, [`crate::kinematics::fd_step_kind`]).
     pub(crate) fd_step_kind: Vec<StepKind>,
+    /// Constants of the centroidal momentum sum ([`crate::centroidal_momentum_current`]).
+    pub(crate) momentum_table: MomentumTable,
     /// Per body: the joint placement is the identity, so a coupled part's `C` is its relative
     /// pose alone (no placement products in the kinematics).
     pub(crate) unplaced: Vec<bool>,
@@ -273,6 +276,7 @@ impl Data {
             sub_b: vec![[Force::zero(); MAX_SUBSYSTEM_DOF]; ns],
             sub_p: vec![[0.0; MAX_SUBSYSTEM_DOF]; ns],
             link_rotors: link_rotor_subsystems(model, &axial_member),
+            momentum_table: MomentumTable::new(model, &axial_member),
             mbar_init: mbar_init(model, &axial_member, &massless_leaf),
             massless_leaf,
             axial_members: (axial_member.iter().enumerate())
@@ -298,17 +302,6 @@ impl Data {
             nle: DVector::zeros(nv),
             factor: DMatrix::zeros(nv, nv),
         }
-    }
-
-    /// True if the precomputed kinematics step kinds of every body of `model` (this
-    /// workspace's model) are those the per-pass chain of checks they replace would choose,
-    /// in the general and the forward-dynamics passes (a test hook for models of any crate).
-    #[doc(hidden)]
-    pub fn step_kinds_match_checks(&self, model: &Model) -> bool {
-        (0..model.nbodies()).all(|i| {
-            self.step_kind[i] == checked_step_kind(model, self, i, false)
-                && self.fd_step_kind[i] == checked_step_kind(model, self, i, true)
-        })
     }
 
     /// Number of bodies this workspace was sized for.

@@ -12,6 +12,7 @@ mod momentum;
 
 pub use com::{center_of_mass, CenterOfMass};
 pub use composite::Centroidal;
+pub(crate) use momentum::MomentumTable;
 pub use momentum::{centroidal_momentum, centroidal_momentum_current, CentroidalMomentum};
 
 #[cfg(test)]

@@ -14,11 +14,21 @@
 //! Rotors without that symmetry are ordinary bodies of the pass (the general path). The ankle's
 //! roller-screw rotors and nuts (axial members, `subsystem::axial`) are formed the same way from
 //! the spin rate or the travel the pass recorded (a nut's CoM moves along its axis).
+//!
+//! Summed by carrier ([`MomentumTable`], built in `Data::new`): the rigid part `M v_p` of
+//! every member whose CoM is fixed in its carrier is the carrier's velocity times their summed
+//! inertia, so each carrier's inertia and its rotors' and screws' are lumped once per model;
+//! per pass a group adds its members' spin terms `u qd` and its sliding nuts' momenta, all in
+//! its frame, and is rotated to the world once (not once per member). Massless frames without
+//! members are left out (exact zeros).
 
 use crate::jacobian::JacobianError;
+use crate::model::Body;
+use crate::spatial::skew;
 use crate::subsystem::axial::{AxialKind, AxialMember};
 use crate::{forward_dynamics_kinematics, Data, Force, Model};
 use nalgebra::{DVector, Matrix3, Vector3};
+use std::ops::Range;
 
 /// Total mass, centre of mass and centroidal momentum `h_G` (world axes), (7.1).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,25 +72,18 @@ pub fn centroidal_momentum_current(
         .first()
         .copied()
         .unwrap_or_else(Vector3::zeros);
+    let table = &data.momentum_table;
     let (mut mass, mut moment) = (0.0, Vector3::zeros());
     let (mut ang, mut lin) = (Vector3::zeros(), Vector3::zeros());
-    for (i, body) in model.bodies().iter().enumerate() {
-        let (rot, pos, h, c, m) = match (&data.axial_member[i], body.parent()) {
-            (Some(rc), Some(_)) => axial_momentum(rc, data, i),
-            _ => {
-                let inertia = body.inertia();
-                let h = inertia.apply(&data.vel[i]);
-                let c = inertia.com();
-                (&data.world_rot[i], data.world_pos[i], h, c, inertia.mass())
-            }
-        };
-        // `h` about the frame origin `pos`, CoM `c` in frame coordinates.
-        let rc = rot * c;
+    for g in &table.groups {
+        let (m, first, h) = group_momentum(g, &table.members, data);
+        // `h` about the frame origin, first moment `m c` in frame coordinates.
+        let (rot, d) = (&data.world_rot[g.body], data.world_pos[g.body] - r);
         let p = rot * h.lin;
         mass += m;
-        moment += (pos - r + rc) * m;
+        moment += d * m + rot * first;
         lin += p;
-        ang += rot * h.ang + (pos - r).cross(&p);
+        ang += rot * h.ang + d.cross(&p);
     }
     if mass <= 0.0 {
         return Err(JacobianError::ZeroMass);
@@ -94,24 +97,147 @@ pub fn centroidal_momentum_current(
     })
 }
 
-/// An axial member's carrier pose, its momentum in carrier axes (moment about the carrier
-/// origin), its CoM in carrier coordinates and its mass (see [`crate::subsystem::axial`]): it
-/// turns at `w_p + s.ang qd`; a rotor's CoM moves with the carrier, a slider's also along `s.lin`.
+/// Mass, first moment and momentum about the frame origin (frame axes) of group `g`: its
+/// lumped constant inertia at the body's velocity plus its members' spin and sliding terms.
 #[inline]
-fn axial_momentum<'d>(
-    rc: &AxialMember,
-    data: &'d Data,
-    i: usize,
-) -> (&'d Matrix3<f64>, Vector3<f64>, Force, Vector3<f64>, f64) {
-    let p = rc.carrier;
-    let vel = &data.vel[p];
-    let (c, qd, _) = rc.state(data, i);
-    let w = vel.ang + rc.s.ang * qd;
-    let mut v = vel.lin + vel.ang.cross(&c);
-    if rc.kind == AxialKind::Slider {
-        v += rc.s.lin * qd;
+fn group_momentum(g: &MomentumGroup, members: &[usize], data: &Data) -> (f64, Vector3<f64>, Force) {
+    let vel = &data.vel[g.body];
+    let l = &g.lumped;
+    let mut h = Force::new(
+        l.inertia * vel.ang + l.first.cross(&vel.lin),
+        vel.lin * l.mass + vel.ang.cross(&l.first),
+    );
+    let (mut mass, mut first) = (l.mass, l.first);
+    for &j in members.get(g.members.clone()).unwrap_or_default() {
+        let Some(rc) = &data.axial_member[j] else {
+            continue;
+        };
+        let (c, qd, _) = rc.state(data, j);
+        h.ang += rc.spin_momentum * qd;
+        if rc.kind == AxialKind::Slider {
+            // Not lumped: its CoM `c` slides along `s.lin` at `qd`.
+            let lin = (vel.lin + vel.ang.cross(&c) + rc.s.lin * qd) * rc.mass;
+            h += Force::new(rc.inertia_com * vel.ang + c.cross(&lin), lin);
+            mass += rc.mass;
+            first += c * rc.mass;
+        }
     }
-    let lin = v * rc.mass;
-    let h = Force::new(rc.inertia_com * w + c.cross(&lin), lin);
-    (&data.world_rot[p], data.world_pos[p], h, c, rc.mass)
+    (mass, first, h)
+}
+
+/// Mass `m`, first moment `m c` and rotational inertia `I_O` about the frame origin (2.21)
+/// of a body plus the axial members of constant CoM it carries (frame coordinates).
+#[derive(Clone, Copy, Debug)]
+struct Lumped {
+    /// Mass `m`.
+    mass: f64,
+    /// First moment `m c`.
+    first: Vector3<f64>,
+    /// Rotational inertia `I_O` about the frame origin.
+    inertia: Matrix3<f64>,
+}
+
+impl Lumped {
+    /// The lumped inertia of `body` alone.
+    fn of(body: &Body) -> Self {
+        let b = &body.inertia;
+        Self {
+            mass: b.mass(),
+            first: b.first_moment(),
+            inertia: b.inertia_about_origin(),
+        }
+    }
+
+    /// True without mass and inertia (then the group's terms are zero).
+    fn is_zero(&self) -> bool {
+        self.mass == 0.0 && self.first == Vector3::zeros() && self.inertia == Matrix3::zeros()
+    }
+
+    /// Adds a rigid part of mass `m`, CoM `c` and inertia `ic` about it (frame axes):
+    /// `I_O += I_c - m [c]x^2` (2.21).
+    fn add(&mut self, m: f64, c: &Vector3<f64>, ic: &Matrix3<f64>) {
+        let s = skew(c);
+        self.mass += m;
+        self.first += c * m;
+        self.inertia += ic - s * s * m;
+    }
+}
+
+/// One summand of the centroidal momentum: a body with a pose in the forward-dynamics pass,
+/// its [`Lumped`] inertia, and the range of its members in [`MomentumTable::members`].
+#[derive(Clone, Debug)]
+struct MomentumGroup {
+    /// The body (its pose and velocity are the group's).
+    body: usize,
+    /// Body plus its constant-CoM axial members.
+    lumped: Lumped,
+    /// Its axial members with per-pass terms (spin, or sliding travel and rate).
+    members: Range<usize>,
+}
+
+/// Per-model constants of [`centroidal_momentum_current`]: the bodies posed by the
+/// forward-dynamics pass, each with the axial members it carries (their rotors' momentum
+/// `M v_p + u qd` in its frame, see the module doc) lumped in, so that one rotation to the world
+/// serves the group.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct MomentumTable {
+    /// The groups in body order.
+    groups: Vec<MomentumGroup>,
+    /// Member bodies of all groups, each group's contiguous.
+    members: Vec<usize>,
+}
+
+impl MomentumTable {
+    /// The table of `model` with its axial members `axial` ([`Data::axial_member`]).
+    pub(crate) fn new(model: &Model, axial: &[Option<AxialMember>]) -> Self {
+        let joins = joined_groups(model, axial);
+        let mut table = Self::default();
+        for (i, body) in model.bodies.iter().enumerate() {
+            if joins[i].is_none() {
+                table.push_group(i, body, axial, &joins);
+            }
+        }
+        table
+    }
+
+    /// Adds the group of body `i` with the members that join it (`joins`), unless it is a
+    /// massless frame without members (a sole or tool frame: its terms are exact zeros).
+    fn push_group(
+        &mut self,
+        i: usize,
+        body: &Body,
+        axial: &[Option<AxialMember>],
+        joins: &[Option<usize>],
+    ) {
+        let mut lumped = Lumped::of(body);
+        let start = self.members.len();
+        for (j, rc) in axial.iter().enumerate() {
+            if let (Some(rc), true) = (rc, joins[j] == Some(i)) {
+                if rc.kind != AxialKind::Slider {
+                    lumped.add(rc.mass, &rc.com, &rc.inertia_com);
+                }
+                self.members.push(j);
+            }
+        }
+        let members = start..self.members.len();
+        if !(members.is_empty() && lumped.is_zero()) {
+            self.groups.push(MomentumGroup {
+                body: i,
+                lumped,
+                members,
+            });
+        }
+    }
+}
+
+/// Per body: the group it joins, its carrier's, if it is an axial member with a parent (no
+/// pose in the forward-dynamics pass) whose carrier has a pose (always so for a model of this
+/// crate; otherwise it stands as an ordinary body).
+fn joined_groups(model: &Model, axial: &[Option<AxialMember>]) -> Vec<Option<usize>> {
+    let carrier: Vec<Option<usize>> = (model.bodies.iter().zip(axial))
+        .map(|(b, rc)| rc.filter(|_| b.parent.is_some()).map(|rc| rc.carrier))
+        .collect();
+    (carrier.iter())
+        .map(|c| c.filter(|&c| carrier.get(c) == Some(&None)))
+        .collect()
 }

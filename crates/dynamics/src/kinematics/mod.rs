@@ -19,9 +19,7 @@ pub(crate) use coupled::{coupled_transform, identity_placements};
 pub(crate) use joint::{add_projected_force, joint_column, relative_motion, six};
 pub(crate) use rotor::{rotor_frames, rotor_transform};
 use step::body_step;
-pub(crate) use step::{
-    body_force, body_kinematics, checked_step_kind, fd_step_kind, force_of, step_kind, StepKind,
-};
+pub(crate) use step::{body_force, body_kinematics, fd_step_kind, force_of, step_kind, StepKind};
 
 use crate::check;
 use crate::spatial::Wrench;
@@ -39,13 +37,41 @@ pub fn forward_kinematics(
     v: &DVector<f64>,
     a: &DVector<f64>,
 ) -> Result<(), DynamicsError> {
+    kinematics_pass(model, data, (q, v, a), false)
+}
+
+/// [`forward_kinematics`] with every body stepped by the general joint kinematics and child
+/// step instead of its precomputed step kind: the independent reference the written-out fast
+/// paths are tested against (test hook; same results up to rounding, slower).
+#[doc(hidden)]
+pub fn general_forward_kinematics(
+    model: &Model,
+    data: &mut Data,
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    a: &DVector<f64>,
+) -> Result<(), DynamicsError> {
+    kinematics_pass(model, data, (q, v, a), true)
+}
+
+/// [`forward_kinematics`] of `(q, v, a)`, by the general step for every body if `general`.
+fn kinematics_pass(
+    model: &Model,
+    data: &mut Data,
+    (q, v, a): (&DVector<f64>, &DVector<f64>, &DVector<f64>),
+    general: bool,
+) -> Result<(), DynamicsError> {
     check::data(model, data)?;
     check::configuration(model, q)?;
     check::vector("v", v, model.nv())?;
     check::vector("a", a, model.nv())?;
     let (q, v) = (q.as_slice(), v.as_slice());
     for body in model.bodies.iter().enumerate() {
-        let kind = data.step_kind[body.0];
+        let kind = if general {
+            StepKind::General
+        } else {
+            data.step_kind[body.0]
+        };
         body_step(model, data, body, kind, q, Some(v));
     }
     take_fault(data)?;

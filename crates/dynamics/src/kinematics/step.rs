@@ -34,8 +34,8 @@ pub(crate) fn body_kinematics(
 }
 
 /// How the first forward recursion steps one body, decided once per model in
-/// [`Data::new`] from the joint, placement and parent (the chain of checks this replaces
-/// would otherwise run per body and pass; see [`step_kind`], [`fd_step_kind`]).
+/// [`Data::new`] from the joint, placement and parent ([`step_kind`], [`fd_step_kind`]; the
+/// fast paths are tested against the general step, `general_forward_kinematics`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum StepKind {
     /// Revolute (or geared-rotor) joint about `e_x` of an unrotated placement:
@@ -101,40 +101,6 @@ pub(crate) fn fd_step_kind(kind: StepKind, member: Option<AxialKind>) -> StepKin
         Some(AxialKind::Geared) => StepKind::SkipRotor,
         Some(_) => StepKind::AxialMotion,
     }
-}
-
-/// The [`StepKind`] the per-pass chain of checks chose for body `i` before the kinds were
-/// precomputed (in the forward-dynamics pass if `fd`): the reference of
-/// [`Data::step_kinds_match_checks`], written as that chain was, independently of
-/// [`step_kind`] and [`fd_step_kind`].
-pub(crate) fn checked_step_kind(model: &Model, data: &Data, i: usize, fd: bool) -> StepKind {
-    let body = &model.bodies[i];
-    match data.axial_member[i].map(|rc| rc.kind) {
-        Some(AxialKind::Geared) if fd => return StepKind::SkipRotor,
-        Some(_) if fd => return StepKind::AxialMotion,
-        _ => {}
-    }
-    if let (Some(k), Some(p), Joint::Revolute(ax) | Joint::Rotor(ax)) =
-        (data.plane_axis[i], body.parent, &body.joint)
-    {
-        if ax.kind == SubspaceKind::Angular && p < i {
-            let j = PlaneJoint {
-                parent: p,
-                scale: ax.scale,
-            };
-            return match k {
-                0 => StepKind::PlaneX(j),
-                1 => StepKind::PlaneY(j),
-                _ => StepKind::PlaneZ(j),
-            };
-        }
-    }
-    if let (Joint::Fixed, Some(p)) = (&body.joint, body.parent) {
-        if p < i && body.placement_x.rot == Matrix3::identity() {
-            return StepKind::Translation(p);
-        }
-    }
-    StepKind::General
 }
 
 /// [`body_kinematics`] of body `(i, model.bodies[i])` by its precomputed `kind` on coordinate
