@@ -76,11 +76,13 @@ fn first_non_finite_wrench(fs: &[Wrench]) -> Option<usize> {
 }
 
 /// A one-DoF pivot `D = J^T M-bar J` of the O(n) backward pass (2.67) must be positive and
-/// finite, else [`DynamicsError::NotPositiveDefinite`] at velocity index `index`: two
-/// comparisons (a NaN fails both) instead of a sign test plus a finiteness classification.
+/// finite, else [`DynamicsError::NotPositiveDefinite`] at velocity index `index`: one integer
+/// comparison of the bits less one (positive finite doubles are exactly the patterns
+/// `1..INFINITY`; zero wraps around, negatives and NaNs lie above), where the two float
+/// comparisons compiled to a classification of ~15 instructions.
 #[inline(always)]
 pub(crate) fn positive_pivot(index: usize, d: f64) -> Result<(), DynamicsError> {
-    if d > 0.0 && d < f64::INFINITY {
+    if d.to_bits().wrapping_sub(1) < f64::INFINITY.to_bits() - 1 {
         return Ok(());
     }
     Err(DynamicsError::NotPositiveDefinite { index, pivot: d })
@@ -174,6 +176,8 @@ mod tests {
     fn positive_pivot_matches_sign_and_finiteness() {
         let cases = [
             f64::NAN,
+            -f64::NAN,
+            f64::from_bits(0x7ff0_0000_0000_0001),
             f64::INFINITY,
             f64::NEG_INFINITY,
             0.0,

@@ -8,7 +8,7 @@ use crate::mechanism::{AxialMotion, MechanismError};
 use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::model::{Body, JointModel};
-use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, SpatialTransform};
+use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, RigidInertia, SpatialTransform};
 use crate::subsystem::axial::{axial_members, carriers, AxialKind, AxialMember, Carried};
 use crate::subsystem::link::{link_rotor_subsystems, LinkRotors};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
@@ -110,6 +110,12 @@ pub struct Data {
     /// `mbar` (rigid sub-system members, whose `M-hat` is applied from the rigid-body inertia
     /// directly, and massless leaves).
     pub(crate) mbar_init: Vec<Option<ArticulatedInertia>>,
+    /// Per body: the rigid-body inertia whose forces (2.56) the O(n) first pass forms, `M_i`
+    /// plus the carried lumped axial members' ([`AxialMember::lumped`], constant in its frame).
+    pub(crate) force_inertia: Vec<RigidInertia>,
+    /// Per body: a lumped axial member's load `s . C^T (M b - f)` on its own coordinate, set
+    /// by the O(n) first pass ([`AxialMember::spin_load`]).
+    pub(crate) axial_load: Vec<f64>,
     /// Coordinate axis (0, 1, 2) of a revolute joint whose placement is a pure translation, so
     /// that `C_i` rotates about that axis ([`ArticulatedInertia::add_tr_transform_axis_to`]), per body.
     pub(crate) plane_axis: Vec<Option<usize>>,
@@ -178,6 +184,23 @@ fn mbar_init(
         }
     }
     init
+}
+
+/// [`Data::force_inertia`]: each body's inertia merged with its lumped axial members' at their
+/// constant frames (spin-invariant, so any spin angle gives the same sum).
+fn force_inertias(
+    model: &Model,
+    axial_member: &[Option<AxialMember>],
+    frames: &[SpatialTransform],
+) -> Vec<RigidInertia> {
+    let mut out: Vec<RigidInertia> = model.bodies.iter().map(|b| b.inertia).collect();
+    for (j, rc) in axial_member.iter().enumerate() {
+        if let Some(rc) = rc.filter(AxialMember::lumped) {
+            let merged = out[rc.carrier].merged(&model.bodies[j].inertia, &frames[j].to_pose());
+            out[rc.carrier] = merged;
+        }
+    }
+    out
 }
 
 /// Per body: fixed joint, zero inertia and no children (see [`Data::massless_leaf`]).
@@ -278,6 +301,8 @@ impl Data {
             link_rotors: link_rotor_subsystems(model, &axial_member),
             momentum_table: MomentumTable::new(model, &axial_member),
             mbar_init: mbar_init(model, &axial_member, &massless_leaf),
+            force_inertia: force_inertias(model, &axial_member, &rotor_frames),
+            axial_load: vec![0.0; n],
             massless_leaf,
             axial_members: (axial_member.iter().enumerate())
                 .filter_map(|(i, rc)| rc.map(|rc| (i, rc)))

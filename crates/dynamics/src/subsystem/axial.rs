@@ -89,6 +89,45 @@ pub(crate) struct AxialMember {
     pub(crate) carrier: usize,
     /// True for a rider: its terms are lumped into its carrier member's.
     pub(crate) rider: bool,
+    /// Constants of its load on its own coordinate ([`AxialMember::spin_load`]).
+    pub(crate) load: LoadForm,
+}
+
+/// Constants of an axial member's load `s . h` on its own coordinate, `h = C^T (M b - f)` of
+/// [`parent_frame_bias`] for a CoM fixed in the carrier: `w^T Q w + qd (u x s_ang) . w +
+/// sigma s_ang . u + g_s . g` (triple products of (2.56) rearranged about the constants).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct LoadForm {
+    /// Symmetric `Q = sym(s_ang~^T I_O) + sym(s_lin h^T) - (s_lin . h) E`: velocity products.
+    q: Matrix3<f64>,
+    /// `u x s_ang`: the gyroscopic part per unit of speed.
+    gyro: Vector3<f64>,
+    /// `s_ang . u`: the part per unit of spin acceleration.
+    su: f64,
+    /// `g_s = -(s_ang x h) - m s_lin`: the gravity part.
+    grav: Vector3<f64>,
+}
+
+impl LoadForm {
+    /// The constants for the column `s`, mass `m`, first moment `h`, rotational inertia `I_O`
+    /// about the carrier origin and spin momentum `u` (carrier frame).
+    fn new(
+        s: &Motion,
+        m: f64,
+        h: &Vector3<f64>,
+        inertia_origin: &Matrix3<f64>,
+        u: &Vector3<f64>,
+    ) -> Self {
+        let sym = |a: Matrix3<f64>| (a + a.transpose()) * 0.5;
+        let sl_h = s.lin.dot(h);
+        Self {
+            q: sym(s.ang.cross_matrix().transpose() * inertia_origin) + sym(s.lin * h.transpose())
+                - Matrix3::identity() * sl_h,
+            gyro: u.cross(&s.ang),
+            su: s.ang.dot(u),
+            grav: -s.ang.cross(h) - s.lin * m,
+        }
+    }
 }
 
 /// A rigid sub-system member that carries riders (the knee's screw housing with its rotor and
@@ -123,6 +162,31 @@ impl Carried {
 }
 
 impl AxialMember {
+    /// True if the member's CoM and inertia are constant in its carrier's frame and it is not
+    /// a rider (Harmonic Drive and ankle screw rotors): its `K` is in the carrier's
+    /// `Data::mbar_init` and its rigid-body forces in the carrier's `Data::force_inertia`, so
+    /// that the O(n) passes see only its [`Self::spin_load`].
+    #[inline(always)]
+    pub(crate) fn lumped(&self) -> bool {
+        !self.rider && self.kind != AxialKind::Slider
+    }
+
+    /// A lumped member's ([`Self::lumped`]) share of [`parent_frame_bias`] beyond its rigid-body
+    /// forces (2.56), the angular `w_p x u qd + u sigma`, and its load `s . h` on its own
+    /// coordinate for the whole `h` ([`LoadForm`]); `w_p`, `g_p` of the carrier.
+    #[inline(always)]
+    pub(crate) fn spin_load(
+        &self,
+        w_p: &Vector3<f64>,
+        g_p: &Vector3<f64>,
+        (qd, sigma): (f64, f64),
+    ) -> (Vector3<f64>, f64) {
+        let (u, f) = (&self.spin_momentum, &self.load);
+        let torque = w_p.cross(&(u * qd)) + u * sigma;
+        let load = w_p.dot(&(f.q * w_p + f.gyro * qd)) + f.su * sigma + f.grav.dot(g_p);
+        (torque, load)
+    }
+
     /// CoM (parent coordinates), speed per unit of `s` and acceleration at zero `qddot` of
     /// member `i` at the state of the last forward-dynamics kinematics pass on `data`.
     #[inline(always)]
@@ -253,6 +317,13 @@ pub(crate) fn axial_members(
                     v_index: body.v_set.as_slice()[0],
                     rider: Some(carrier) != sub.parent,
                     carrier,
+                    load: LoadForm::new(
+                        &s,
+                        mass,
+                        &(com * mass),
+                        &congruence.ang,
+                        &(inertia_com * s.ang),
+                    ),
                 }
             });
         }
@@ -402,6 +473,30 @@ mod tests {
                 assert_eq!(kind, expected, "{part:?} {act}");
             }
         }
+    }
+
+    /// A lumped member's spin torque and load against the whole parent-frame bias: the bias
+    /// less the rigid-body forces of its carrier-frame inertia is `[torque; 0]`, and `s . h`
+    /// is the load (ankle screw rotors: speed, spin acceleration and an off-origin `s`).
+    #[test]
+    fn spin_load_matches_parent_frame_bias() {
+        let (model, _) = ankle_leg(false);
+        let data = crate::Data::new(&model);
+        let lumped = data.axial_members.iter().filter(|(_, rc)| rc.lumped());
+        let (w, g) = (Vector3::new(0.7, -1.3, 2.1), Vector3::new(0.4, -2.0, -9.5));
+        let mut n = 0;
+        for (_, rc) in lumped {
+            let (qd, sigma) = (-3.7, 55.0);
+            let h = parent_frame_bias(rc, &w, &g, (rc.com, qd, sigma));
+            let (torque, load) = rc.spin_load(&w, &g, (qd, sigma));
+            let rigid = RigidInertia::new(rc.mass, rc.com, rc.inertia_com).expect("valid");
+            let spin = h - (rigid.bias_force(&w) - rigid.gravity_force(&g));
+            let scale = h.to_vector().amax();
+            assert!((spin.ang - torque).amax() < 1e-13 * scale && spin.lin.amax() < 1e-13 * scale);
+            assert!((rc.s.dot(&h) - load).abs() < 1e-13 * scale);
+            n += 1;
+        }
+        assert!(n > 0);
     }
 
     /// The knee's rotor (when axisymmetric) and nut ride on the housing of the same drive,

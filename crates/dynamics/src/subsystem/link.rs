@@ -5,9 +5,10 @@
 //! With the link's `U = M-bar J`, `f-hat = M-bar b - f-bar` (link frame) and the rotors'
 //! constants ([`super::axial`]) summed, `M_S = J^T U + sum s^T K s` (a scalar `D`),
 //! `B_S = C^T U + sum K s` (parent frame), `p_S = (Q - J^T f-hat - sum s . h) / D` with the
-//! rotors' parent-frame `h = C^T (M b - f)`, `K_S = C^T M-bar C + sum K - B_S B_S^T / D` (the
-//! constant `sum K` is in the parent's start value `Data::mbar_init`) and
-//! `k_S = C^T f-hat + sum h + B_S p_S`. No member kinematics (2.77)-(2.79) are formed: the
+//! rotors' parent-frame `h = C^T (M b - f)` (their loads `s . h`, `Data::axial_load`),
+//! `K_S = C^T M-bar C + sum K - B_S B_S^T / D` (the constant `sum K` is in the parent's start
+//! value `Data::mbar_init`) and `k_S = C^T f-hat + sum h + B_S p_S` (the `sum h` is in the
+//! parent's `f-bar` from the first pass, `Data::force_inertia`). No member kinematics (2.77)-(2.79) are formed: the
 //! link's `C-hat`, `J-hat`, `b-hat` are its own `C`, `J`, `b`.
 
 use super::axial::AxialKind;
@@ -31,8 +32,8 @@ pub(crate) struct LinkRotors {
     v_index: usize,
     /// The sub-system's parent body.
     parent: Option<usize>,
-    /// The rotor bodies and their parent-frame columns `s` (first `nrotors` entries).
-    rotors: [(usize, Motion); MAX_LINK_ROTORS],
+    /// The rotor bodies (first `nrotors` entries).
+    rotors: [usize; MAX_LINK_ROTORS],
     /// Number of rotors.
     nrotors: usize,
     /// `sum K s` of the rotors.
@@ -60,7 +61,7 @@ pub(crate) fn link_rotor_subsystems(
             return None;
         };
         let rotors = s.members.iter().filter_map(|&j| axial_member[j].as_ref());
-        let geared = rotors.clone().all(|rc| rc.kind == AxialKind::Geared);
+        let geared = (rotors.clone()).all(|rc| rc.kind == AxialKind::Geared && rc.lumped());
         if s.v_set.len() != 1
             || body.parent != s.parent
             || rotors.count() > MAX_LINK_ROTORS
@@ -78,7 +79,7 @@ pub(crate) fn link_rotor_subsystems(
             axis,
             v_index: s.v_set[0],
             parent: s.parent,
-            rotors: [(0, Motion::zero()); MAX_LINK_ROTORS],
+            rotors: [0; MAX_LINK_ROTORS],
             nrotors: 0,
             rigid,
             ks: Force::zero(),
@@ -88,7 +89,7 @@ pub(crate) fn link_rotor_subsystems(
             let Some(rc) = &axial_member[j] else {
                 continue;
             };
-            out.rotors[out.nrotors] = (j, rc.s);
+            out.rotors[out.nrotors] = j;
             out.nrotors += 1;
             out.ks += rc.ks;
             out.sks += rc.sks;
@@ -112,11 +113,10 @@ pub(crate) fn backward(
         ));
     };
     let (link, ax, vi) = (lr.link, &lr.axis, lr.v_index);
-    let (mut rhs, mut h) = (tau[vi], Force::zero());
-    for (j, sj) in &lr.rotors[..lr.nrotors] {
-        let hj = &data.fbar[*j];
-        rhs -= sj.dot(hj);
-        h += *hj;
+    // The rotors' loads s . h; their forces are in the parent's f-bar (`Data::force_inertia`).
+    let mut rhs = tau[vi];
+    for j in &lr.rotors[..lr.nrotors] {
+        rhs -= data.axial_load[*j];
     }
     let m = &data.mbar[link];
     let u = ax.apply_inertia(m);
@@ -133,7 +133,7 @@ pub(crate) fn backward(
     let Some(parent) = lr.parent else {
         return Ok(());
     };
-    let k = plane::tr_apply_force(x, axis, &hat_f) + h + b * p;
+    let k = plane::tr_apply_force(x, axis, &hat_f) + b * p;
     let (head, tail) = data.mbar.split_at_mut(link);
     let (m, out) = (&tail[0], &mut head[parent]);
     // The rotors' sum K is in the parent's `mbar_init`.

@@ -140,9 +140,16 @@ fn backward_n<const N: usize>(
             if rc.rider {
                 continue; // Lumped into its carrier (below).
             }
-            // Axial member: its C^T (M b - f) already in the parent frame (in `fbar`).
-            let h = data.fbar[j];
-            let sh = rc.s.dot(&h);
+            // Axial member: its load s . h, h = C^T (M b - f) in the parent frame; a lumped
+            // one's forces are in the parent's f-bar already (`Data::force_inertia`).
+            let sh = match rc.lumped() {
+                true => data.axial_load[j],
+                false => {
+                    let h = data.fbar[j];
+                    fc += h;
+                    rc.s.dot(&h)
+                }
+            };
             match rc.kind {
                 // Constant K, B_S row and M_S diagonal entry, one column only.
                 AxialKind::Geared => {
@@ -174,7 +181,6 @@ fn backward_n<const N: usize>(
                     }
                 }
             }
-            fc += h;
             continue;
         }
         let m = &data.mbar[j];

@@ -1,5 +1,6 @@
 //! First forward recursion of the O(n) algorithm (Algorithm 2.2 with step 2 of Algorithm 2.1):
-//! body forces, `M-bar_i = M_i` and the parent-frame bias of spin-invariant rotors.
+//! body forces, `M-bar_i = M_i` and the parent-frame bias of spin-invariant rotors (of the
+//! lumped ones only the spin torque and their load on their own coordinate).
 
 use crate::check;
 use crate::kinematics::{coupled_transform, force_of, rotor_transform};
@@ -27,33 +28,38 @@ pub fn forward_pass_1(
 
 /// Dynamic half of the first pass after [`super::super::forward_dynamics_kinematics`]: body forces
 /// `f-bar_i = f_i` (2.56) written to `fbar` only,
-/// `M-bar_i = M_i` and the sub-system member kinematics; for a
-/// spin-invariant rotor `f-bar` holds its parent-frame `C^T (M b - f)` instead
-/// ([`crate::subsystem::axial::parent_frame_bias`]).
+/// `M-bar_i = M_i` and the sub-system member kinematics; for a rider or slider `f-bar` holds its
+/// parent-frame `C^T (M b - f)` instead ([`crate::subsystem::axial::parent_frame_bias`]), a
+/// lumped axial member's rigid-body forces are in its carrier's (`Data::force_inertia`) and
+/// only its spin torque and load are added ([`AxialMember::spin_load`]).
 pub(super) fn dynamic_first_pass(
     model: &Model,
     data: &mut Data,
     fext: Option<&[Wrench]>,
 ) -> Result<(), DynamicsError> {
     // Slices zipped (no per-body bounds checks); rotors are filled by the second loop.
-    let bodies = model
-        .bodies
-        .iter()
+    let bodies = (data.force_inertia.iter())
         .zip(&data.axial_member)
         .zip(&data.mbar_init);
     let state = data.gravity_body.iter().zip(&data.vel);
     let out = data.mbar.iter_mut().zip(data.fbar.iter_mut());
-    for (i, (((body, rc), init), ((g, vel), (mbar, fbar)))) in
+    for (i, (((inertia, rc), init), ((g, vel), (mbar, fbar)))) in
         bodies.zip(state.zip(out)).enumerate()
     {
         if rc.is_none() {
-            *fbar = force_of(&body.inertia, g, &vel.ang, fext, i);
+            *fbar = force_of(inertia, g, &vel.ang, fext, i);
             if let Some(init) = init {
                 mbar.set_from(init);
             }
         }
     }
     for (i, rc) in &data.axial_members {
+        if rc.lumped() {
+            let (h, load) = lumped_load(model, data, *i, rc, fext)?;
+            data.fbar[rc.carrier] -= h;
+            data.axial_load[*i] = load;
+            continue;
+        }
         let h = rotor_bias(model, data, *i, rc, fext)?;
         data.fbar[*i] = h;
         if rc.rider {
@@ -69,8 +75,47 @@ pub(super) fn dynamic_first_pass(
     Ok(())
 }
 
+/// Lumped axial member `i` ([`AxialMember::lumped`]): the share of its `C^T (M b - f)` that
+/// its carrier's `f-bar` lacks (its rigid-body forces are in the carrier's,
+/// `Data::force_inertia`: the spin torque less its external wrench) and its load
+/// `s . C^T (M b - f)` on its own coordinate.
+#[inline]
+fn lumped_load(
+    model: &Model,
+    data: &Data,
+    i: usize,
+    rc: &AxialMember,
+    fext: Option<&[Wrench]>,
+) -> Result<(Force, f64), DynamicsError> {
+    let (w, g) = carrier_state(model, data, i, rc);
+    let (_, qd, sigma) = rc.state(data, i);
+    let (torque, load) = rc.spin_load(&w, &g, (qd, sigma));
+    let h = Force::new(torque, Vector3::zeros());
+    Ok(match external(fext, i) {
+        Some(f) => {
+            let f = carrier_wrench(model, data, i, rc, f)?;
+            (h - f, load - rc.s.dot(&f))
+        }
+        None => (h, load),
+    })
+}
+
+/// Angular velocity and gravity in the carrier frame of axial member `i`.
+#[inline(always)]
+fn carrier_state(
+    model: &Model,
+    data: &Data,
+    i: usize,
+    rc: &AxialMember,
+) -> (Vector3<f64>, Vector3<f64>) {
+    match model.bodies[i].parent {
+        Some(_) => (data.vel[rc.carrier].ang, data.gravity_body[rc.carrier]),
+        None => (Vector3::zeros(), model.gravity),
+    }
+}
+
 /// `C^T (M b - f)` of axial member `i` in its carrier's frame, including its external
-/// wrench (given in the spun rotor frame, so only then is the spin angle evaluated).
+/// wrench ([`carrier_wrench`]).
 #[inline]
 fn rotor_bias(
     model: &Model,
@@ -79,15 +124,31 @@ fn rotor_bias(
     rc: &AxialMember,
     fext: Option<&[Wrench]>,
 ) -> Result<Force, DynamicsError> {
+    let (w, g) = carrier_state(model, data, i, rc);
+    let h = parent_frame_bias(rc, &w, &g, rc.state(data, i));
+    Ok(match external(fext, i) {
+        Some(f) => h - carrier_wrench(model, data, i, rc, f)?,
+        None => h,
+    })
+}
+
+/// The external wrench of body `i`, `None` if there is none or it is zero.
+#[inline(always)]
+fn external(fext: Option<&[Wrench]>, i: usize) -> Option<Wrench> {
+    fext.map(|f| f[i]).filter(|f| !is_zero(f))
+}
+
+/// The external wrench `f` of axial member `i` (given in the spun rotor frame, so only here is
+/// the spin angle evaluated) in its carrier's frame; out of line, as it is rare.
+#[inline(never)]
+fn carrier_wrench(
+    model: &Model,
+    data: &Data,
+    i: usize,
+    rc: &AxialMember,
+    f: Wrench,
+) -> Result<Force, DynamicsError> {
     let body = &model.bodies[i];
-    let (w, g) = match body.parent {
-        Some(_) => (data.vel[rc.carrier].ang, data.gravity_body[rc.carrier]),
-        None => (Vector3::zeros(), model.gravity),
-    };
-    let mut h = parent_frame_bias(rc, &w, &g, rc.state(data, i));
-    let Some(f) = fext.map(|f| f[i]).filter(|f| !is_zero(f)) else {
-        return Ok(h);
-    };
     let x = match &body.joint_model {
         JointModel::Coupled {
             mechanism: Mechanism::HarmonicDrive(rotor),
@@ -102,11 +163,10 @@ fn rotor_bias(
     };
     let f = x.tr_apply_force(&f);
     // A rider's wrench moves on from the common parent into its carrier's frame.
-    h -= match rc.rider {
+    Ok(match rc.rider {
         true => data.x[rc.carrier].inv_tr_apply_force(&f),
         false => f,
-    };
-    Ok(h)
+    })
 }
 
 /// True if every component of `f` is zero: an OR of the six bit patterns settles the usual
