@@ -1,6 +1,7 @@
 //! Preallocated per-call workspace (model/data split): every recursion writes here.
 
 use crate::centroidal::MomentumTable;
+use crate::dynamics::on::OneDofStep;
 use crate::kinematics::{fd_step_kind, step_kind, StepKind};
 use crate::mechanism::ankle::AnkleLoop;
 use crate::mechanism::knee::KneeLoopCache;
@@ -53,12 +54,8 @@ pub struct Data {
     pub(crate) mbar: Vec<ArticulatedInertia>,
     /// Projected forces `f-bar_i` (2.70).
     pub(crate) fbar: Vec<Force>,
-    /// `U_i = M-bar_i J_i` of one-DoF joints.
-    pub(crate) u: Vec<Force>,
-    /// `(J_i^T M-bar_i J_i)^-1` of one-DoF joints.
-    pub(crate) dinv: Vec<f64>,
-    /// Forward propagation quantity `p_i` (2.68) of one-DoF joints.
-    pub(crate) p1: Vec<f64>,
+    /// `U_i`, `D_i^-1` and `p_i` of one-DoF joints, one entry per body ([`OneDofStep`]).
+    pub(crate) one_dof: Vec<OneDofStep>,
     /// `D^-1 U^T` of 6-DoF joints, so that `P_i = -pi6 C_i` (2.67).
     pub(crate) pi6: Vec<Matrix6<f64>>,
     /// Forward propagation quantity `p_i` (2.68) of 6-DoF joints.
@@ -219,7 +216,7 @@ fn massless_leaves(model: &Model) -> Vec<bool> {
 }
 
 /// The coordinate axis of a revolute (or rotor) joint with an unrotated placement.
-fn plane_axis(body: &Body) -> Option<usize> {
+pub(crate) fn plane_axis(body: &Body) -> Option<usize> {
     match &body.joint {
         Joint::Revolute(ax) | Joint::Rotor(ax) if body.placement_x.rot == Matrix3::identity() => {
             match ax.axis {
@@ -283,9 +280,7 @@ impl Data {
             force: vec![Force::zero(); n],
             mbar: vec![ArticulatedInertia::zero(); n],
             fbar: vec![Force::zero(); n],
-            u: vec![Force::zero(); n],
-            dinv: vec![0.0; n],
-            p1: vec![0.0; n],
+            one_dof: vec![OneDofStep::default(); n],
             pi6: vec![Matrix6::zeros(); n],
             p6: vec![Vector6::zeros(); n],
             fnet: vec![Force::zero(); n],

@@ -13,8 +13,9 @@
 
 use super::axial::AxialKind;
 use super::on::add_rigid_congruence;
+use crate::dynamics::on::OneDofStep;
 use crate::model::joint::Joint;
-use crate::spatial::{plane, Force, JointAxis, Motion};
+use crate::spatial::{plane, Force, JointAxis, Motion, RigidInertia};
 use crate::{Data, DynamicsError, Model};
 use nalgebra::DVector;
 
@@ -40,8 +41,12 @@ pub(crate) struct LinkRotors {
     pub(crate) ks: Force,
     /// `sum s^T K s` of the rotors.
     pub(crate) sks: f64,
-    /// The link has no children outside the sub-system: `M-bar` is its rigid-body inertia.
-    pub(crate) rigid: bool,
+    /// The link's rigid-body inertia if it has no children outside the sub-system (its
+    /// `M-bar`, applied directly).
+    rigid: Option<RigidInertia>,
+    /// The coordinate axis of the link's rotation ([`Data::plane_axis`], held here so that
+    /// the steps index no further per-body array).
+    plane_axis: Option<usize>,
 }
 
 /// Per sub-system: its [`LinkRotors`] if it has one coordinate, exactly one member that is not
@@ -81,7 +86,8 @@ pub(crate) fn link_rotor_subsystems(
             parent: s.parent,
             rotors: [0; MAX_LINK_ROTORS],
             nrotors: 0,
-            rigid,
+            rigid: rigid.then_some(body.inertia),
+            plane_axis: crate::data::plane_axis(body),
             ks: Force::zero(),
             sks: 0.0,
         };
@@ -100,13 +106,8 @@ pub(crate) fn link_rotor_subsystems(
 }
 
 /// Backward step (Algorithm 2.3) of link-with-rotors sub-system `s` (`data.link_rotors[s]` is
-/// set); stores `B_S` in `u[link]`, `D^-1` in `dinv[link]` and `p_S` in `p1[link]`.
-pub(crate) fn backward(
-    data: &mut Data,
-    s: usize,
-    tau: &DVector<f64>,
-    model: &Model,
-) -> Result<(), DynamicsError> {
+/// set); stores `B_S`, `D^-1` and `p_S` in `one_dof[link]`.
+pub(crate) fn backward(data: &mut Data, s: usize, tau: &DVector<f64>) -> Result<(), DynamicsError> {
     let Some(lr) = &data.link_rotors[s] else {
         return Err(DynamicsError::Unsupported(
             "not a link-with-rotors sub-system",
@@ -123,13 +124,11 @@ pub(crate) fn backward(
     let hat_f = m.apply(&data.bias_acc[link]) - data.fbar[link];
     let d = ax.dot_force(&u) + lr.sks;
     crate::check::positive_pivot(vi, d)?;
-    let (x, axis) = (&data.x[link], data.plane_axis[link]);
+    let (x, axis) = (&data.x[link], lr.plane_axis);
     let b = plane::tr_apply_force(x, axis, &u) + lr.ks;
     let dinv = 1.0 / d;
     let p = (rhs - ax.dot_force(&hat_f)) * dinv;
-    data.u[link] = b;
-    data.dinv[link] = dinv;
-    data.p1[link] = p;
+    data.one_dof[link] = OneDofStep { u: b, dinv, p };
     let Some(parent) = lr.parent else {
         return Ok(());
     };
@@ -137,11 +136,12 @@ pub(crate) fn backward(
     let (head, tail) = data.mbar.split_at_mut(link);
     let (m, out) = (&tail[0], &mut head[parent]);
     // The rotors' sum K is in the parent's `mbar_init`.
-    if lr.rigid {
-        add_rigid_congruence(&model.bodies[link].inertia, x, out);
-        out.sub_outer(&b, dinv);
-    } else {
-        m.add_tr_transform_sub_outer_to(axis, x, (&b, dinv), out);
+    match &lr.rigid {
+        Some(inertia) => {
+            add_rigid_congruence(inertia, x, out);
+            out.sub_outer(&b, dinv);
+        }
+        None => m.add_tr_transform_sub_outer_to(axis, x, (&b, dinv), out),
     }
     data.fbar[parent] -= k;
     Ok(())
@@ -157,11 +157,11 @@ pub(crate) fn forward(data: &mut Data, s: usize) {
     };
     let link = lr.link;
     let ap = lr.parent.map_or(Motion::zero(), |p| data.acc[p]);
-    let qdd = data.p1[link] - data.dinv[link] * data.u[link].dot(&ap);
+    let qdd = data.one_dof[link].qdd(&ap);
     data.ddq[lr.v_index] = qdd;
-    if lr.rigid {
+    if lr.rigid.is_some() {
         return;
     }
-    let cap = plane::apply_motion(&data.x[link], data.plane_axis[link], &ap);
+    let cap = plane::apply_motion(&data.x[link], lr.plane_axis, &ap);
     data.acc[link] = cap + lr.axis.motion(qdd) + data.bias_acc[link];
 }

@@ -2,6 +2,7 @@
 //! body list: bodies outside sub-systems here, sub-systems by [`crate::subsystem`].
 
 use super::six_dof::six_dof_backward;
+use super::OneDofStep;
 use crate::check;
 use crate::model::joint::Joint;
 use crate::spatial::Force;
@@ -32,7 +33,7 @@ pub(super) fn backward_unchecked(
         match node.kind {
             NodeKind::Body(i) => body_backward(model, data, i, tau)?,
             NodeKind::Subsystem(s) if data.link_rotors[s].is_some() => {
-                subsystem::link::backward(data, s, tau, model)?
+                subsystem::link::backward(data, s, tau)?
             }
             NodeKind::Subsystem(s) => subsystem::on::backward(model, data, s, tau)?,
         }
@@ -62,9 +63,7 @@ fn body_backward(
             let p = dinv * (tau[body.v_index] - u.dot(b) + ax.dot_force(fbar));
             let k = mbar.apply(b) + u * p - *fbar;
             mbar.sub_outer(&u, dinv);
-            data.u[i] = u;
-            data.dinv[i] = dinv;
-            data.p1[i] = p;
+            data.one_dof[i] = OneDofStep { u, dinv, p };
             k
         }
         Joint::Fixed if data.massless_leaf[i] => Force::zero() - data.fbar[i],

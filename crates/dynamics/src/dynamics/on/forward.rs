@@ -32,7 +32,7 @@ fn body_forward(model: &Model, data: &mut Data, i: usize) {
     let vi = body.v_index;
     let a = match &body.joint {
         Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => {
-            let qdd = data.p1[i] - data.dinv[i] * data.u[i].dot(&ap);
+            let qdd = data.one_dof[i].qdd(&ap);
             data.ddq[vi] = qdd;
             ap + ax.motion(qdd)
         }

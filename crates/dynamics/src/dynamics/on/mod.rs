@@ -27,9 +27,29 @@ pub use backward::backward_pass;
 pub use first::forward_pass_1;
 pub use forward::forward_pass_2;
 
-use crate::spatial::Wrench;
+use crate::spatial::{Force, Motion, Wrench};
 use crate::{Data, DynamicsError, Model};
 use nalgebra::DVector;
+
+/// What the backward pass leaves for the second forward pass of a one-DoF step (a body or a
+/// link-with-rotors sub-system): one record per body, so each step indexes one array.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct OneDofStep {
+    /// `U = M-bar J` (for a link with rotors `B_S`, parent frame).
+    pub(crate) u: Force,
+    /// `D^-1 = (J^T M-bar J)^-1`.
+    pub(crate) dinv: f64,
+    /// `p` of (2.68).
+    pub(crate) p: f64,
+}
+
+impl OneDofStep {
+    /// `qddot = p - D^-1 U^T a` for the parent acceleration `a` ((2.66) with `P = -D^-1 U^T C`).
+    #[inline(always)]
+    pub(crate) fn qdd(&self, a: &Motion) -> f64 {
+        self.p - self.dinv * self.u.dot(a)
+    }
+}
 
 /// Body forces and the backward and second forward passes (Algorithms 2.1-2.4 after the
 /// kinematics of [`super::forward_dynamics_kinematics`]); inputs are checked by the caller.
