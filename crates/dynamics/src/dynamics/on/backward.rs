@@ -60,7 +60,7 @@ fn body_backward(
             let dinv = 1.0 / d;
             let b = &data.bias_acc[i];
             let fbar = &data.fbar[i];
-            let p = dinv * (tau[body.v_index] - u.dot(b) + ax.dot_force(fbar));
+            let p = dinv * (tau.as_slice()[body.v_index] - u.dot(b) + ax.dot_force(fbar));
             let k = mbar.apply(b) + u * p - *fbar;
             mbar.sub_outer(&u, dinv);
             data.one_dof[i] = OneDofStep { u, dinv, p };

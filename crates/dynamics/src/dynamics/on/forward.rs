@@ -33,7 +33,7 @@ fn body_forward(model: &Model, data: &mut Data, i: usize) {
     let a = match &body.joint {
         Joint::Revolute(ax) | Joint::Prismatic(ax) | Joint::Rotor(ax) => {
             let qdd = data.one_dof[i].qdd(&ap);
-            data.ddq[vi] = qdd;
+            data.ddq.as_mut_slice()[vi] = qdd;
             ap + ax.motion(qdd)
         }
         Joint::Fixed | Joint::Coupled => ap,
