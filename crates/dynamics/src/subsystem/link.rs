@@ -117,7 +117,7 @@ pub(crate) fn backward(data: &mut Data, s: usize, tau: &DVector<f64>) -> Result<
     // The rotors' loads s . h; their forces are in the parent's f-bar (`Data::force_inertia`).
     // Slice indexing: one comparison (DVector's (row, column) index costs ~9 instructions).
     let mut rhs = tau.as_slice()[vi];
-    for j in &lr.rotors[..lr.nrotors] {
+    for j in lr.rotors.iter().take(lr.nrotors) {
         rhs -= data.axial_load[*j];
     }
     let m = &data.mbar[link];
