@@ -161,19 +161,9 @@ fn backward_n<const N: usize>(
                 }
                 // Column c of J-hat is s rho_c (see `super::axial`).
                 AxialKind::Screw | AxialKind::Slider => {
-                    let (ks, sks) = (rc.ks, rc.sks);
-                    let (row, cols) = (&data.axial_motion[j].row, &sub.columns[m]);
-                    let inputs = model.bodies[j].v_set.len().min(row.len());
-                    for a in 0..inputs {
-                        let c = cols[a];
-                        bs[c] += ks * row[a];
-                        rhs[c] -= row[a] * sh;
-                        for b in 0..inputs {
-                            if cols[b] <= c {
-                                ms[c][cols[b]] += sks * row[a] * row[b];
-                            }
-                        }
-                    }
+                    let rho = axial_rho::<N>(model, data, &sub.columns[m], j);
+                    let on = (&mut ms, &mut bs, &mut rhs);
+                    add_axial(on, n, &rho, &rc.ks, rc.sks, sh);
                     if rc.kind == AxialKind::Slider {
                         // Its K moves with its CoM; a rotor's constant K is in `mbar_init`.
                         let c = rc.state(data, j).0;
@@ -293,13 +283,8 @@ fn add_riders<const N: usize>(
         let Some(rc) = &data.axial_member[r] else {
             continue;
         };
-        let (u, sks) = (rc.ks, rc.sks);
-        let mut rho = [0.0; N];
-        let row = &data.axial_motion[r].row;
-        let inputs = model.bodies[r].v_set.len();
-        for (&c, &x) in sub_columns.iter().zip(row).take(inputs) {
-            rho[c] += x;
-        }
+        let u = rc.ks;
+        let rho = axial_rho::<N>(model, data, sub_columns, r);
         let e = bj.dot(&u) + rc.s.dot(&data.fbar[r]);
         let cu = cj.tr_apply_force(&u);
         let mut ju = [0.0; N];
@@ -307,11 +292,49 @@ fn add_riders<const N: usize>(
             ju[c] = jj[c].dot(&u);
         }
         for c in 0..n {
-            bs[c] += cu * rho[c];
-            rhs[c] -= rho[c] * e;
             for k in c..n {
-                ms[k][c] += ju[k] * rho[c] + rho[k] * ju[c] + rho[k] * rho[c] * sks;
+                ms[k][c] += ju[k] * rho[c] + rho[k] * ju[c];
             }
+        }
+        add_axial((ms, bs, rhs), n, &rho, &cu, rc.sks, e);
+    }
+}
+
+/// `rho` of axial member `j` (3.32): its row `d x / d q_in` scattered to the sub-system's
+/// columns `cols` (the member's column of `J-hat` is `s rho`).
+#[inline(always)]
+fn axial_rho<const N: usize>(
+    model: &Model,
+    data: &Data,
+    cols: &[usize; crate::model::MAX_INDEX_SET],
+    j: usize,
+) -> [f64; N] {
+    let mut rho = [0.0; N];
+    let row = &data.axial_motion[j].row;
+    for (&c, &x) in cols.iter().zip(row).take(model.bodies[j].v_set.len()) {
+        rho[c] += x;
+    }
+    rho
+}
+
+/// Adds an axial column `s rho` to (2.76) with `ks` its `C-hat^T M s`, `sks = s^T M s` and
+/// `load` its bias load: `sks rho rho^T` to `M_S` (lower triangle), `ks rho^T` to `B_S` and
+/// `-rho load` to the right-hand side.
+#[inline(always)]
+fn add_axial<const N: usize>(
+    (ms, bs, rhs): (&mut [[f64; N]; N], &mut [Force; N], &mut [f64; N]),
+    n: usize,
+    rho: &[f64; N],
+    ks: &Force,
+    sks: f64,
+    load: f64,
+) {
+    for c in 0..n {
+        bs[c] += *ks * rho[c];
+        rhs[c] -= rho[c] * load;
+        let src = rho[c] * sks;
+        for k in c..n {
+            ms[k][c] += rho[k] * src;
         }
     }
 }
