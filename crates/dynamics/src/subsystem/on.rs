@@ -229,14 +229,36 @@ fn backward_n<const N: usize>(
             w[c] -= wk * ms[c][k];
         }
         w[c] = w[c] * ms[c][c]; // The factor's diagonal is stored inverted.
-        kc.sub_outer(&w[c], 1.0);
     }
+    sub_gram(&mut kc, &w, n);
     for (b, r) in bs.iter().zip(&rhs).take(n) {
         fc += *b * *r;
     }
     data.mbar[p] += kc;
     data.fbar[p] -= fc;
     Ok(())
+}
+
+/// `k -= W W^T` for the force columns `w[..n]` of `W`, the `B_S^T M_S^-1 B_S` of `K_S` (2.76)
+/// in one pass (symmetric blocks on one triangle, mirrored).
+#[inline(always)]
+fn sub_gram<const N: usize>(k: &mut ArticulatedInertia, w: &[Force; N], n: usize) {
+    for i in 0..3 {
+        for j in 0..3 {
+            let cross: f64 = w[..n].iter().map(|u| u.ang[i] * u.lin[j]).sum();
+            k.cross[(i, j)] -= cross;
+        }
+        for j in i..3 {
+            let ang: f64 = w[..n].iter().map(|u| u.ang[i] * u.ang[j]).sum();
+            let lin: f64 = w[..n].iter().map(|u| u.lin[i] * u.lin[j]).sum();
+            k.ang[(i, j)] -= ang;
+            k.lin[(i, j)] -= lin;
+            if j != i {
+                k.ang[(j, i)] -= ang;
+                k.lin[(j, i)] -= lin;
+            }
+        }
+    }
 }
 
 /// Adds member `j`'s terms of (2.76) to `M_S`, `B_S` and the right-hand side `Q_S - f_S`:
@@ -368,5 +390,31 @@ fn forward_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
             a += *col * *q;
         }
         data.acc[j] = a;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Matrix6, Vector3};
+
+    /// The one-pass `W W^T` downdate against the dense product, for one and two columns.
+    #[test]
+    fn sub_gram_matches_dense() {
+        let l = Matrix6::from_fn(|i, j| ((2 * i + 5 * j) % 7) as f64 * 0.4 - 1.1);
+        let start = ArticulatedInertia::from_matrix(&(l * l.transpose()));
+        let w = [
+            Force::new(Vector3::new(0.3, -1.1, 0.6), Vector3::new(2.0, 0.1, -0.7)),
+            Force::new(Vector3::new(-0.5, 0.2, 1.4), Vector3::new(0.0, -0.9, 0.3)),
+        ];
+        for n in 1..=2 {
+            let mut got = start;
+            sub_gram(&mut got, &w, n);
+            let mut expect = start.to_matrix();
+            for u in &w[..n] {
+                expect -= u.to_vector() * u.to_vector().transpose();
+            }
+            assert!((got.to_matrix() - expect).amax() < 1e-14 * expect.amax());
+        }
     }
 }
