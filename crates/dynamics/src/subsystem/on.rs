@@ -161,19 +161,9 @@ fn backward_n<const N: usize>(
                 }
                 // Column c of J-hat is s rho_c (see `super::axial`).
                 AxialKind::Screw | AxialKind::Slider => {
-                    let (ks, sks) = (rc.ks, rc.sks);
-                    let (row, cols) = (&data.axial_motion[j].row, &sub.columns[m]);
-                    let inputs = model.bodies[j].v_set.len().min(row.len());
-                    for a in 0..inputs {
-                        let c = cols[a];
-                        bs[c] += ks * row[a];
-                        rhs[c] -= row[a] * sh;
-                        for b in 0..inputs {
-                            if cols[b] <= c {
-                                ms[c][cols[b]] += sks * row[a] * row[b];
-                            }
-                        }
-                    }
+                    let rho = axial_rho::<N>(model, data, &sub.columns[m], j);
+                    let on = (&mut ms, &mut bs, &mut rhs);
+                    add_axial(on, n, &rho, &rc.ks, rc.sks, sh);
                     if rc.kind == AxialKind::Slider {
                         // Its K moves with its CoM; a rotor's constant K is in `mbar_init`.
                         let c = rc.state(data, j).0;
@@ -239,14 +229,36 @@ fn backward_n<const N: usize>(
             w[c] -= wk * ms[c][k];
         }
         w[c] = w[c] * ms[c][c]; // The factor's diagonal is stored inverted.
-        kc.sub_outer(&w[c], 1.0);
     }
+    sub_gram(&mut kc, &w, n);
     for (b, r) in bs.iter().zip(&rhs).take(n) {
         fc += *b * *r;
     }
     data.mbar[p] += kc;
     data.fbar[p] -= fc;
     Ok(())
+}
+
+/// `k -= W W^T` for the force columns `w[..n]` of `W`, the `B_S^T M_S^-1 B_S` of `K_S` (2.76)
+/// in one pass (symmetric blocks on one triangle, mirrored).
+#[inline(always)]
+fn sub_gram<const N: usize>(k: &mut ArticulatedInertia, w: &[Force; N], n: usize) {
+    for i in 0..3 {
+        for j in 0..3 {
+            let cross: f64 = w[..n].iter().map(|u| u.ang[i] * u.lin[j]).sum();
+            k.cross[(i, j)] -= cross;
+        }
+        for j in i..3 {
+            let ang: f64 = w[..n].iter().map(|u| u.ang[i] * u.ang[j]).sum();
+            let lin: f64 = w[..n].iter().map(|u| u.lin[i] * u.lin[j]).sum();
+            k.ang[(i, j)] -= ang;
+            k.lin[(i, j)] -= lin;
+            if j != i {
+                k.ang[(j, i)] -= ang;
+                k.lin[(j, i)] -= lin;
+            }
+        }
+    }
 }
 
 /// Adds member `j`'s terms of (2.76) to `M_S`, `B_S` and the right-hand side `Q_S - f_S`:
@@ -293,13 +305,8 @@ fn add_riders<const N: usize>(
         let Some(rc) = &data.axial_member[r] else {
             continue;
         };
-        let (u, sks) = (rc.ks, rc.sks);
-        let mut rho = [0.0; N];
-        let row = &data.axial_motion[r].row;
-        let inputs = model.bodies[r].v_set.len();
-        for (&c, &x) in sub_columns.iter().zip(row).take(inputs) {
-            rho[c] += x;
-        }
+        let u = rc.ks;
+        let rho = axial_rho::<N>(model, data, sub_columns, r);
         let e = bj.dot(&u) + rc.s.dot(&data.fbar[r]);
         let cu = cj.tr_apply_force(&u);
         let mut ju = [0.0; N];
@@ -307,11 +314,49 @@ fn add_riders<const N: usize>(
             ju[c] = jj[c].dot(&u);
         }
         for c in 0..n {
-            bs[c] += cu * rho[c];
-            rhs[c] -= rho[c] * e;
             for k in c..n {
-                ms[k][c] += ju[k] * rho[c] + rho[k] * ju[c] + rho[k] * rho[c] * sks;
+                ms[k][c] += ju[k] * rho[c] + rho[k] * ju[c];
             }
+        }
+        add_axial((ms, bs, rhs), n, &rho, &cu, rc.sks, e);
+    }
+}
+
+/// `rho` of axial member `j` (3.32): its row `d x / d q_in` scattered to the sub-system's
+/// columns `cols` (the member's column of `J-hat` is `s rho`).
+#[inline(always)]
+fn axial_rho<const N: usize>(
+    model: &Model,
+    data: &Data,
+    cols: &[usize; crate::model::MAX_INDEX_SET],
+    j: usize,
+) -> [f64; N] {
+    let mut rho = [0.0; N];
+    let row = &data.axial_motion[j].row;
+    for (&c, &x) in cols.iter().zip(row).take(model.bodies[j].v_set.len()) {
+        rho[c] += x;
+    }
+    rho
+}
+
+/// Adds an axial column `s rho` to (2.76) with `ks` its `C-hat^T M s`, `sks = s^T M s` and
+/// `load` its bias load: `sks rho rho^T` to `M_S` (lower triangle), `ks rho^T` to `B_S` and
+/// `-rho load` to the right-hand side.
+#[inline(always)]
+fn add_axial<const N: usize>(
+    (ms, bs, rhs): (&mut [[f64; N]; N], &mut [Force; N], &mut [f64; N]),
+    n: usize,
+    rho: &[f64; N],
+    ks: &Force,
+    sks: f64,
+    load: f64,
+) {
+    for c in 0..n {
+        bs[c] += *ks * rho[c];
+        rhs[c] -= rho[c] * load;
+        let src = rho[c] * sks;
+        for k in c..n {
+            ms[k][c] += rho[k] * src;
         }
     }
 }
@@ -345,5 +390,31 @@ fn forward_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
             a += *col * *q;
         }
         data.acc[j] = a;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Matrix6, Vector3};
+
+    /// The one-pass `W W^T` downdate against the dense product, for one and two columns.
+    #[test]
+    fn sub_gram_matches_dense() {
+        let l = Matrix6::from_fn(|i, j| ((2 * i + 5 * j) % 7) as f64 * 0.4 - 1.1);
+        let start = ArticulatedInertia::from_matrix(&(l * l.transpose()));
+        let w = [
+            Force::new(Vector3::new(0.3, -1.1, 0.6), Vector3::new(2.0, 0.1, -0.7)),
+            Force::new(Vector3::new(-0.5, 0.2, 1.4), Vector3::new(0.0, -0.9, 0.3)),
+        ];
+        for n in 1..=2 {
+            let mut got = start;
+            sub_gram(&mut got, &w, n);
+            let mut expect = start.to_matrix();
+            for u in &w[..n] {
+                expect -= u.to_vector() * u.to_vector().transpose();
+            }
+            assert!((got.to_matrix() - expect).amax() < 1e-14 * expect.amax());
+        }
     }
 }
