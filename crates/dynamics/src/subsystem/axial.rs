@@ -193,7 +193,7 @@ impl AxialMember {
     pub(crate) fn state(&self, data: &crate::Data, i: usize) -> (Vector3<f64>, f64, f64) {
         let m = &data.axial_motion[i];
         match self.kind {
-            AxialKind::Geared => (self.com, data.fd_v[self.v_index], 0.0),
+            AxialKind::Geared => (self.com, data.fd_v.as_slice()[self.v_index], 0.0),
             AxialKind::Screw => (self.com, m.speed, m.bias),
             AxialKind::Slider => (self.com + self.s.lin * m.travel, m.speed, m.bias),
         }

@@ -129,7 +129,7 @@ fn backward_n<const N: usize>(
     let mut bs = [Force::zero(); N];
     let mut rhs = [0.0; N];
     for (r, &v) in rhs.iter_mut().zip(&sub.v_set) {
-        *r = tau[v];
+        *r = tau.as_slice()[v];
     }
     // K_S's congruences: rigid ones summed compactly, added to `kc` once at the end.
     let (mut kc, mut rigid_kc) = (ArticulatedInertia::zero(), RigidSum::zero());
@@ -381,7 +381,7 @@ fn forward_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
     let mut qdd = [0.0; N];
     for c in 0..n {
         qdd[c] = data.sub_p[s][c] - y[c];
-        data.ddq[sub.v_set[c]] = qdd[c];
+        data.ddq.as_mut_slice()[sub.v_set[c]] = qdd[c];
     }
     for &j in &sub.with_outside_children {
         let (cj, bj) = hat_transform_bias(model, data, s, j);
