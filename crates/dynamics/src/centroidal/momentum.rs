@@ -24,10 +24,10 @@
 
 use crate::jacobian::JacobianError;
 use crate::model::Body;
-use crate::spatial::skew;
+use crate::spatial::{ArticulatedInertia, RigidInertia};
 use crate::subsystem::axial::{AxialKind, AxialMember};
 use crate::{forward_dynamics_kinematics, Data, Force, Model};
-use nalgebra::{DVector, Matrix3, Vector3};
+use nalgebra::{DVector, Vector3};
 use std::ops::Range;
 
 /// Total mass, centre of mass and centroidal momentum `h_G` (world axes), (7.1).
@@ -103,11 +103,8 @@ pub fn centroidal_momentum_current(
 fn group_momentum(g: &MomentumGroup, members: &[usize], data: &Data) -> (f64, Vector3<f64>, Force) {
     let vel = &data.vel[g.body];
     let l = &g.lumped;
-    let mut h = Force::new(
-        l.inertia * vel.ang + l.first.cross(&vel.lin),
-        vel.lin * l.mass + vel.ang.cross(&l.first),
-    );
-    let (mut mass, mut first) = (l.mass, l.first);
+    let mut h = l.apply(vel);
+    let (mut mass, mut first) = (l.mass(), l.first_moment());
     for &j in members.get(g.members.clone()).unwrap_or_default() {
         let Some(rc) = &data.axial_member[j] else {
             continue;
@@ -125,52 +122,14 @@ fn group_momentum(g: &MomentumGroup, members: &[usize], data: &Data) -> (f64, Ve
     (mass, first, h)
 }
 
-/// Mass `m`, first moment `m c` and rotational inertia `I_O` about the frame origin (2.21)
-/// of a body plus the axial members of constant CoM it carries (frame coordinates).
-#[derive(Clone, Copy, Debug)]
-struct Lumped {
-    /// Mass `m`.
-    mass: f64,
-    /// First moment `m c`.
-    first: Vector3<f64>,
-    /// Rotational inertia `I_O` about the frame origin.
-    inertia: Matrix3<f64>,
-}
-
-impl Lumped {
-    /// The lumped inertia of `body` alone.
-    fn of(body: &Body) -> Self {
-        let b = &body.inertia;
-        Self {
-            mass: b.mass(),
-            first: b.first_moment(),
-            inertia: b.inertia_about_origin(),
-        }
-    }
-
-    /// True without mass and inertia (then the group's terms are zero).
-    fn is_zero(&self) -> bool {
-        self.mass == 0.0 && self.first == Vector3::zeros() && self.inertia == Matrix3::zeros()
-    }
-
-    /// Adds a rigid part of mass `m`, CoM `c` and inertia `ic` about it (frame axes):
-    /// `I_O += I_c - m [c]x^2` (2.21).
-    fn add(&mut self, m: f64, c: &Vector3<f64>, ic: &Matrix3<f64>) {
-        let s = skew(c);
-        self.mass += m;
-        self.first += c * m;
-        self.inertia += ic - s * s * m;
-    }
-}
-
 /// One summand of the centroidal momentum: a body with a pose in the forward-dynamics pass,
-/// its [`Lumped`] inertia, and the range of its members in [`MomentumTable::members`].
+/// its inertia with its constant-CoM axial members' merged in, and the range of its members in [`MomentumTable::members`].
 #[derive(Clone, Debug)]
 struct MomentumGroup {
     /// The body (its pose and velocity are the group's).
     body: usize,
-    /// Body plus its constant-CoM axial members.
-    lumped: Lumped,
+    /// Body plus its constant-CoM axial members (frame coordinates).
+    lumped: RigidInertia,
     /// Its axial members with per-pass terms (spin, or sliding travel and rate).
     members: Range<usize>,
 }
@@ -209,18 +168,19 @@ impl MomentumTable {
         axial: &[Option<AxialMember>],
         joins: &[Option<usize>],
     ) {
-        let mut lumped = Lumped::of(body);
+        let mut lumped = body.inertia;
         let start = self.members.len();
         for (j, rc) in axial.iter().enumerate() {
             if let (Some(rc), true) = (rc, joins[j] == Some(i)) {
                 if rc.kind != AxialKind::Slider {
-                    lumped.add(rc.mass, &rc.com, &rc.inertia_com);
+                    let part = RigidInertia::from_parts(rc.mass, rc.com, rc.inertia_com);
+                    lumped = lumped.add_shifted(&part, &Vector3::zeros());
                 }
                 self.members.push(j);
             }
         }
         let members = start..self.members.len();
-        if !(members.is_empty() && lumped.is_zero()) {
+        if !(members.is_empty() && lumped.to_articulated() == ArticulatedInertia::zero()) {
             self.groups.push(MomentumGroup {
                 body: i,
                 lumped,

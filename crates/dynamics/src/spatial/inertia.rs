@@ -67,7 +67,7 @@ impl RigidInertia {
     }
 
     /// Builds the cached quantities without validation.
-    fn from_parts(mass: f64, com: Vector3<f64>, inertia_com: Matrix3<f64>) -> Self {
+    pub(crate) fn from_parts(mass: f64, com: Vector3<f64>, inertia_com: Matrix3<f64>) -> Self {
         let h = com * mass;
         let c = skew(&com);
         let inertia_origin = inertia_com - c * c * mass;
