@@ -1,6 +1,8 @@
 //! Sub-command implementations, one module per capability.
 
 pub mod calibrate;
+pub mod interrupt;
+pub mod outdir;
 pub mod dynamics;
 pub mod simulate;
 pub mod ssv;

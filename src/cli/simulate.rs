@@ -17,7 +17,8 @@ mod progress;
 mod report;
 mod setup;
 
-use super::CliResult;
+use super::outdir::{self, OutputDir};
+use super::{interrupt, CliResult};
 use biped_sim::record::Recorder;
 use biped_sim::simulation::{Frame, Signals};
 use biped_sim::SimError;
@@ -132,7 +133,7 @@ pub struct SimulateArgs {
 /// Run `biped simulate`.
 pub fn run(args: SimulateArgs) -> CliResult {
     let job = setup::Job::from_args(&args)?;
-    let out_dir = args
+    let target = args
         .out
         .clone()
         .unwrap_or_else(|| PathBuf::from("out/simulate").join(job.scenario_name()));
@@ -143,11 +144,15 @@ pub fn run(args: SimulateArgs) -> CliResult {
     signals.register(&mut rec)?;
     output::register_total(&mut rec)?;
     let chosen = output::chosen_plots(&rec, &args.plot)?;
+    let out = OutputDir::create(&target, "--out")?;
     rec.prefault();
     let mut bar = progress::Progress::new(duration);
     let mut last_t = 0.0;
     let due = job.recording();
     let mut observe = |f: &Frame| -> Result<(), SimError> {
+        if interrupt::requested() {
+            return Err(SimError::Stopped(outdir::interrupted_reason().into()));
+        }
         last_t = f.t;
         if due.at(f.t) {
             signals.record(f, &mut rec)?;
@@ -161,15 +166,13 @@ pub fn run(args: SimulateArgs) -> CliResult {
     bar.finish();
     let (summary, sim) = match result {
         Ok(done) => done,
-        Err(e) => {
-            let saved = output::write_partial(&rec, &out_dir);
-            return Err(format!("simulation failed after t = {last_t:.4} s: {e}{saved}").into());
-        }
+        Err(e) => return Err(output::abandon(out, &rec, &info, last_t, &e).into()),
     };
     let plant = sim.plant();
-    let files = output::write_all(&rec, plant, &summary, &info, &chosen, &out_dir)?;
+    let files = output::write_all(&rec, plant, &summary, &info, &chosen, out.path())?;
+    out.commit()?;
     let pd = sim.controller();
-    report::print_report(&summary, plant, &rec, &info, pd, &out_dir, &files);
+    report::print_report(&summary, plant, &rec, &info, pd, &target, &files);
     let failed = args.check && !summary.passed();
     Ok(if failed {
         ExitCode::FAILURE

@@ -3,16 +3,18 @@
 //! With `--dynamic` the walk of one method (`--method`, default minimisation) is then tracked
 //! in the contact simulation: `dynamic.csv`, plots and a `"dynamic"` summary entry.
 
-use super::CliResult;
+use super::outdir::{self, OutputDir, Status};
+use super::{interrupt, CliResult};
 use biped_control::pattern::WalkingPattern;
 use biped_control::walk::run::RECORDED_JOINTS;
 use biped_control::walk::{
     run_dynamic_walk, run_walk, walk_pattern_params, DynamicWalkParams, DynamicWalkRun,
     DynamicWalkSummary, Method, WalkParams, WalkRun,
 };
-use biped_robots::lola::{self, LolaType};
+use biped_robots::lola::{self, LolaModel, LolaType};
 use biped_sim::Recorder;
 use clap::Args;
+use serde_json::{Map, Value};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -60,44 +62,70 @@ pub fn run(args: WalkArgs) -> CliResult {
     let lola = lola::build(LolaType::Type2)?;
     let params = walk_pattern_params(&lola, args.steps, args.step_length, args.step_time)?;
     let pattern = WalkingPattern::generate(&params)?;
-    std::fs::create_dir_all(&args.out)?;
-    let mut runs = Vec::new();
-    for &m in &methods {
-        let run = run_walk(&lola, &pattern, m, WalkParams::default())?;
-        write_csv(&run, &args.out.join(format!("{m}.csv")))?;
-        eprintln!("{m}: peak |L_z| {:.3} N m s, peak |tau_z| {:.2} N m, min distance {:.4} m, IK median {:.1} us",
-            run.summary.peak_abs_lz, run.summary.peak_abs_tau_z, run.summary.min_distance, run.summary.ik_us_median);
-        runs.push(run);
-    }
-    write_plots(&runs, &args.out)?;
-    let summary: serde_json::Map<String, serde_json::Value> = runs
-        .iter()
-        .map(|r| {
-            Ok((
-                r.method.name().to_string(),
-                serde_json::to_value(r.summary)?,
-            ))
-        })
-        .collect::<Result<_, serde_json::Error>>()?;
-    let mut summary = summary;
-    let dynamic = if args.dynamic {
-        let method = match methods.as_slice() {
-            [m] => *m,
-            _ => Method::Minimization,
-        };
-        let run = dynamic_walk(&args, method)?;
-        summary.insert("dynamic".into(), serde_json::to_value(run.summary)?);
-        Some(run)
-    } else {
-        None
+    let out = OutputDir::create(&args.out, "--out")?;
+    let mut summary = Map::new();
+    let dynamic = match walk_all(&args, &lola, &pattern, &methods, out.path(), &mut summary) {
+        Ok(dynamic) => dynamic,
+        Err(e) => {
+            let status = match interrupt::requested() {
+                true => Status::Interrupted,
+                false => Status::Failed,
+            };
+            let reason = e.to_string();
+            let note = out.abandon(status, &reason, Some(Value::Object(summary)));
+            return Err(format!("{reason}{note}").into());
+        }
     };
-    let text = serde_json::to_string_pretty(&summary)?;
-    std::fs::write(args.out.join("summary.json"), text)?;
+    outdir::stamp(&mut summary, Status::Completed);
+    outdir::write_json(&out.path().join("summary.json"), &Value::Object(summary))?;
+    out.commit()?;
     println!("wrote {}", args.out.display());
     match dynamic.map(|r| r.summary) {
         Some(s) if !s.walked => Err(verdict_error(&s).into()),
         _ => Ok(ExitCode::SUCCESS),
     }
+}
+
+/// Error of a walk stopped by SIGINT / SIGTERM between two of its parts.
+fn check_interrupt() -> Result<(), Box<dyn std::error::Error>> {
+    match interrupt::requested() {
+        true => Err(outdir::interrupted_reason().into()),
+        false => Ok(()),
+    }
+}
+
+/// Walks every method (then the dynamic walk if asked), writing into `dir` and adding each
+/// part's summary to `summary` as it finishes.
+fn walk_all(
+    args: &WalkArgs,
+    lola: &LolaModel,
+    pattern: &WalkingPattern,
+    methods: &[Method],
+    dir: &Path,
+    summary: &mut Map<String, Value>,
+) -> Result<Option<DynamicWalkRun>, Box<dyn std::error::Error>> {
+    let mut runs = Vec::new();
+    for &m in methods {
+        check_interrupt()?;
+        let run = run_walk(lola, pattern, m, WalkParams::default())?;
+        write_csv(&run, &dir.join(format!("{m}.csv")))?;
+        eprintln!("{m}: peak |L_z| {:.3} N m s, peak |tau_z| {:.2} N m, min distance {:.4} m, IK median {:.1} us",
+            run.summary.peak_abs_lz, run.summary.peak_abs_tau_z, run.summary.min_distance, run.summary.ik_us_median);
+        summary.insert(m.name().to_string(), serde_json::to_value(run.summary)?);
+        runs.push(run);
+    }
+    write_plots(&runs, dir)?;
+    if !args.dynamic {
+        return Ok(None);
+    }
+    check_interrupt()?;
+    let method = match methods {
+        [m] => *m,
+        _ => Method::Minimization,
+    };
+    let run = dynamic_walk(args, method, dir)?;
+    summary.insert("dynamic".into(), serde_json::to_value(run.summary)?);
+    Ok(Some(run))
 }
 
 /// One-line error of a failed dynamic walk.
@@ -116,6 +144,7 @@ fn verdict_error(s: &DynamicWalkSummary) -> String {
 fn dynamic_walk(
     args: &WalkArgs,
     method: Method,
+    dir: &Path,
 ) -> Result<DynamicWalkRun, Box<dyn std::error::Error>> {
     let p = DynamicWalkParams {
         steps: args.steps,
@@ -148,7 +177,7 @@ fn dynamic_walk(
         s.peak_abs_tau_z,
         s.realtime_factor
     );
-    write_dynamic(&run, &args.out)?;
+    write_dynamic(&run, dir)?;
     Ok(run)
 }
 

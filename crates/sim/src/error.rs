@@ -67,6 +67,9 @@ pub enum SimError {
     /// Writing outputs failed.
     #[error("output: {0}")]
     Output(String),
+    /// The observer ended the run early (e.g. on SIGINT); the text says why.
+    #[error("stopped: {0}")]
+    Stopped(String),
 }
 
 /// Checks that `x` is finite and `> 0` (or `>= 0` with `allow_zero`).

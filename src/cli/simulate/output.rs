@@ -3,11 +3,13 @@
 
 use super::report::{final_base_height, summary_json};
 use super::setup::Info;
+use crate::cli::outdir::{self, OutputDir, Status};
 use biped_sim::glob::glob_match;
 use biped_sim::plant::Plant;
 use biped_sim::record::Recorder;
 use biped_sim::simulation::{Frame, Summary};
 use biped_sim::SimError;
+use serde_json::json;
 use std::path::Path;
 
 /// Result of this module.
@@ -40,13 +42,32 @@ pub fn record_total(f: &Frame, rec: &mut Recorder) -> Result<(), SimError> {
         .map_err(|e| SimError::Output(e.to_string()))
 }
 
-/// After a failed run: writes what was recorded; returns a note for the error line.
-pub fn write_partial(rec: &Recorder, dir: &Path) -> String {
-    let path = dir.join("signals.csv");
-    match rec.is_empty() || rec.write_csv(&path).is_err() {
-        true => String::new(),
-        false => format!(" (signals until then in {})", path.display()),
+/// Ends a run that stopped at `t` with `err`: the signals recorded until then and a
+/// `summary.json` marked failed or interrupted replace the output directory; returns the
+/// error line.
+pub fn abandon(out: OutputDir, rec: &Recorder, info: &Info, t: f64, err: &SimError) -> String {
+    let status = match err {
+        SimError::Stopped(_) => Status::Interrupted,
+        _ => Status::Failed,
+    };
+    let mut files = Vec::new();
+    let mut kept = String::new();
+    if !rec.is_empty() && rec.write_csv(&out.path().join("signals.csv")).is_ok() {
+        files.push("signals.csv");
+        kept = format!("; signals until then in {}", out.target().join("signals.csv").display());
     }
+    let base = json!({
+        "model": info.model,
+        "scenario": info.scenario,
+        "stopped_at": t,
+        "files": files,
+    });
+    let reason = match err {
+        SimError::Stopped(why) => format!("simulation interrupted after t = {t:.4} s: {why}"),
+        _ => format!("simulation failed after t = {t:.4} s: {err}"),
+    };
+    let note = out.abandon(status, &reason, Some(base));
+    format!("{reason}{kept}{note}")
 }
 
 /// One line of a plot: legend label and recorder column.
@@ -203,7 +224,6 @@ pub fn write_all(
     chosen: &[Plot],
     dir: &Path,
 ) -> OutResult<Vec<String>> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let mut files = vec!["signals.csv".to_string()];
     rec.write_csv(&dir.join(&files[0]))?;
     for p in plots(rec, plant).iter().chain(chosen) {
@@ -215,10 +235,11 @@ pub fn write_all(
         files.push(p.file.clone());
     }
     files.push("summary.json".to_string());
-    let json = summary_json(summary, final_base_height(rec, plant), plant, info, &files)?;
-    let text = serde_json::to_string_pretty(&json)?;
-    let path = dir.join("summary.json");
-    std::fs::write(&path, text + "\n").map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut json = summary_json(summary, final_base_height(rec, plant), plant, info, &files)?;
+    if let Some(map) = json.as_object_mut() {
+        outdir::stamp(map, Status::Completed);
+    }
+    outdir::write_json(&dir.join("summary.json"), &json)?;
     Ok(files)
 }
 
