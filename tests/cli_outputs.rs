@@ -2,7 +2,6 @@
 //! clearly marked failed / interrupted result, never a mix; a second run into a directory in
 //! use is refused.
 
-
 use serde_json::Value;
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
@@ -11,7 +10,9 @@ use std::time::{Duration, Instant};
 
 /// A fresh directory under the test's temporary folder.
 fn fresh(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("outputs").join(name);
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("outputs")
+        .join(name);
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
@@ -86,7 +87,15 @@ fn a_second_run_into_a_directory_in_use_is_refused() {
     let d = dir.to_str().unwrap();
     let mut first = spawn(&["simulate", "--duration", "30", "--every", "10", "--out", d]);
     wait_for(&dir, staging_exists);
-    let (ok, err) = finish(&["simulate", "--scenario", "drop", "--duration", "1", "--out", d]);
+    let (ok, err) = finish(&[
+        "simulate",
+        "--scenario",
+        "drop",
+        "--duration",
+        "1",
+        "--out",
+        d,
+    ]);
     assert!(!ok, "second run must fail");
     assert!(err.contains("another biped run"), "{err}");
     assert!(first.wait().unwrap().success());
@@ -125,7 +134,15 @@ fn sigterm_marks_the_result_interrupted() {
     let d = dir.to_str().unwrap();
     let (ok, err) = finish(&["simulate", "--duration", "0.3", "--out", d]);
     assert!(ok, "{err}");
-    let mut child = spawn(&["simulate", "--duration", "1000", "--every", "100", "--out", d]);
+    let mut child = spawn(&[
+        "simulate",
+        "--duration",
+        "1000",
+        "--every",
+        "100",
+        "--out",
+        d,
+    ]);
     wait_for(&dir, staging_exists);
     std::thread::sleep(Duration::from_millis(300));
     terminate(&child);
@@ -161,10 +178,22 @@ fn a_directory_of_other_files_is_not_replaced() {
     let dir = fresh("foreign").join("mine");
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("thesis.tex"), "keep me").unwrap();
-    let (ok, err) = finish(&["simulate", "--duration", "0.1", "--out", dir.to_str().unwrap()]);
+    let (ok, err) = finish(&[
+        "simulate",
+        "--duration",
+        "0.1",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
     assert!(!ok);
-    assert!(err.contains("--out") && err.contains("not a biped result"), "{err}");
-    assert_eq!(std::fs::read_to_string(dir.join("thesis.tex")).unwrap(), "keep me");
+    assert!(
+        err.contains("--out") && err.contains("not a biped result"),
+        "{err}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("thesis.tex")).unwrap(),
+        "keep me"
+    );
 }
 
 #[test]
@@ -174,7 +203,15 @@ fn a_killed_run_leaves_the_previous_result_and_its_leftovers_are_removed() {
     let (ok, err) = finish(&["simulate", "--duration", "0.3", "--out", d]);
     assert!(ok, "{err}");
     let before = std::fs::read(dir.join("summary.json")).unwrap();
-    let mut child = spawn(&["simulate", "--duration", "1000", "--every", "100", "--out", d]);
+    let mut child = spawn(&[
+        "simulate",
+        "--duration",
+        "1000",
+        "--every",
+        "100",
+        "--out",
+        d,
+    ]);
     wait_for(&dir, staging_exists);
     child.kill().unwrap();
     child.wait().unwrap();

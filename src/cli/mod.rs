@@ -1,9 +1,9 @@
 //! Sub-command implementations, one module per capability.
 
 pub mod calibrate;
+pub mod dynamics;
 pub mod interrupt;
 pub mod outdir;
-pub mod dynamics;
 pub mod simulate;
 pub mod ssv;
 pub mod walk;

@@ -74,7 +74,8 @@ impl OutputDir {
         };
         fs::create_dir_all(&parent).map_err(|e| format!("{option} {}", at(target, e)))?;
         let lock_path = parent.join(format!(".{name}.lock"));
-        let lock = File::create(&lock_path).map_err(|e| format!("{option} {}", at(&lock_path, e)))?;
+        let lock =
+            File::create(&lock_path).map_err(|e| format!("{option} {}", at(&lock_path, e)))?;
         match lock.try_lock() {
             Ok(()) => {}
             Err(TryLockError::WouldBlock) => {
@@ -135,7 +136,10 @@ impl OutputDir {
             return Ok(());
         }
         if !t.is_dir() {
-            return Err(format!("{option} {}: exists and is not a directory", t.display()));
+            return Err(format!(
+                "{option} {}: exists and is not a directory",
+                t.display()
+            ));
         }
         let mut entries = fs::read_dir(t).map_err(|e| format!("{option} {}", at(t, e)))?;
         let ours = t.join(MARKER).exists() || t.join("summary.json").exists();
@@ -152,7 +156,10 @@ impl OutputDir {
     pub fn commit(self) -> DirResult<()> {
         let t = &self.target;
         if t.exists() {
-            let name = t.file_name().map(|n| n.to_string_lossy()).unwrap_or_default();
+            let name = t
+                .file_name()
+                .map(|n| n.to_string_lossy())
+                .unwrap_or_default();
             let aside = self
                 .staging
                 .with_file_name(format!(".{name}.old-{}", std::process::id()));

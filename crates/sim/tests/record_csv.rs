@@ -1,6 +1,6 @@
 //! Recorder: CSV round trip, vector expansion, NaN back-fill, SVG output and error paths.
 
-use biped_sim::record::{RecordError, Recorder};
+use biped_sim::record::{write_whole, RecordError, Recorder};
 use std::path::PathBuf;
 
 /// Fresh scratch directory for this test binary.
@@ -227,4 +227,26 @@ proptest::proptest! {
             }
         }
     }
+}
+
+#[test]
+fn a_failed_write_leaves_the_previous_file_and_no_leftover() {
+    let dir = scratch("whole");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("r.csv");
+    std::fs::write(&path, "previous").unwrap();
+    let failed: Result<(), std::io::Error> = write_whole(&path, |tmp| {
+        std::fs::write(tmp, "half a fi")?;
+        Err(std::io::Error::other("disk full"))
+    });
+    assert!(failed.is_err());
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "previous");
+    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+    assert_eq!(left.len(), 1, "the partial sibling is removed");
+    let mut rec = Recorder::new();
+    rec.sample(0.0).unwrap();
+    rec.set("x", 1.5).unwrap();
+    rec.write_csv(&path).unwrap();
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "time,x\n0.0,1.5\n");
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
 }

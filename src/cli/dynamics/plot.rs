@@ -1,17 +1,21 @@
 //! SVG plot of forward-dynamics run time over the Dill level, like thesis Fig. 2.19 (log scales).
 
 use super::bench::Timings;
+use biped_sim::record::write_whole;
 use plotters::prelude::*;
 use std::path::Path;
 
 /// One plotted algorithm: legend, colour, and which timing it shows.
 type Series = (&'static str, RGBColor, fn(&Timings) -> f64);
 
-/// Writes run time (us, log) over DoFs (log) per algorithm to `path` (parent folders created).
+/// Writes run time (us, log) over DoFs (log) per algorithm to `path` (parent folders created;
+/// the file appears whole or not at all).
 pub fn runtime_svg(path: &Path, rows: &[Timings]) -> Result<(), Box<dyn std::error::Error>> {
-    if let Some(dir) = path.parent() {
-        std::fs::create_dir_all(dir)?;
-    }
+    write_whole(path, |tmp| draw(tmp, rows)).map_err(|e| format!("{}: {e}", path.display()).into())
+}
+
+/// Draws the plot of [`runtime_svg`] into `path`.
+fn draw(path: &Path, rows: &[Timings]) -> Result<(), Box<dyn std::error::Error>> {
     let series: [Series; 3] = [
         ("O(n)", RED, |t| t.on),
         ("CRBA + Cholesky", BLUE, |t| t.crba),

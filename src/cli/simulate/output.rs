@@ -54,7 +54,10 @@ pub fn abandon(out: OutputDir, rec: &Recorder, info: &Info, t: f64, err: &SimErr
     let mut kept = String::new();
     if !rec.is_empty() && rec.write_csv(&out.path().join("signals.csv")).is_ok() {
         files.push("signals.csv");
-        kept = format!("; signals until then in {}", out.target().join("signals.csv").display());
+        kept = format!(
+            "; signals until then in {}",
+            out.target().join("signals.csv").display()
+        );
     }
     let base = json!({
         "model": info.model,

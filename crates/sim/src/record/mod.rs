@@ -255,21 +255,20 @@ impl Recorder {
     }
 
     /// Writes `time,<columns>` and one line per sample with shortest round-trip `f64` text
-    /// ([`push_f64`]).
+    /// ([`push_f64`]); the file appears complete or not at all ([`write_whole`]).
     pub fn write_csv(&self, path: &Path) -> Result<(), RecordError> {
         if self.is_empty() {
             return Err(RecordError::Empty);
         }
-        let io = |source| RecordError::Io {
+        write_whole(path, |tmp| {
+            let file = std::fs::File::create(tmp)?;
+            let mut w = std::io::BufWriter::new(file);
+            self.csv_to(&mut w).and_then(|_| w.flush())
+        })
+        .map_err(|source| RecordError::Io {
             path: path.to_path_buf(),
             source,
-        };
-        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-            std::fs::create_dir_all(dir).map_err(io)?;
-        }
-        let file = std::fs::File::create(path).map_err(io)?;
-        let mut w = std::io::BufWriter::new(file);
-        self.csv_to(&mut w).and_then(|_| w.flush()).map_err(io)
+        })
     }
 
     /// Writes the CSV text to `w`, one row buffer per line.
@@ -293,6 +292,28 @@ impl Recorder {
         }
         Ok(())
     }
+}
+
+/// Writes a file as a whole: `write` fills a hidden sibling (`.NAME.partial-PID`, parent
+/// folders created), which is renamed to `path` on success and removed on failure, so `path`
+/// holds either its previous content or the complete new one.
+pub fn write_whole<E>(path: &Path, write: impl FnOnce(&Path) -> Result<(), E>) -> Result<(), E>
+where
+    E: From<std::io::Error>,
+{
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir)?;
+    }
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy())
+        .unwrap_or_default();
+    let tmp = path.with_file_name(format!(".{name}.partial-{}", std::process::id()));
+    let result = write(&tmp).and_then(|()| Ok(std::fs::rename(&tmp, path)?));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
 }
 
 /// Appends the shortest text that parses back to exactly `x` (serde_json's float formatter;

@@ -1,6 +1,6 @@
 //! SVG line plots of recorded signals over time (plotters, SVG backend).
 
-use super::{RecordError, Recorder};
+use super::{write_whole, RecordError, Recorder};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -37,18 +37,13 @@ impl Recorder {
             .iter()
             .map(|s| self.column(s))
             .collect::<Result<Vec<_>, _>>()?;
-        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-            let io = |source| RecordError::Io {
-                path: path.to_path_buf(),
-                source,
-            };
-            std::fs::create_dir_all(dir).map_err(io)?;
-        }
-        let plot_err = |e: String| RecordError::Plot {
+        let drawn = write_whole(path, |tmp| {
+            draw(self.time(), signals, &cols, tmp, title, y_label)
+        });
+        drawn.map_err(|e| RecordError::Plot {
             path: path.to_path_buf(),
-            message: e,
-        };
-        draw(self.time(), signals, &cols, path, title, y_label).map_err(|e| plot_err(e.to_string()))
+            message: e.to_string(),
+        })
     }
 }
 
