@@ -62,7 +62,7 @@
 //! - [`pattern`]: walking pattern generation (footsteps, CoM by ZMP preview control, swing
 //!   feet).
 //! - [`walk`]: the 1 kHz walking IK cycle, its evaluation, and the dynamic walk in simulation.
-//! - [`error`]: [`IkError`].
+//! - [`error`]: the error type [`IkError`].
 
 pub mod avoidance;
 pub mod error;

@@ -77,7 +77,7 @@
 //! - [`scenario`]: drop, stand and sway set-ups with their pass criteria.
 //! - [`record`]: named time series to CSV and SVG plots.
 //! - [`glob`]: `*` patterns for signal and joint names.
-//! - [`error`]: [`SimError`].
+//! - [`error`]: the error type [`SimError`].
 
 pub mod contact;
 pub mod controller;

@@ -54,8 +54,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut loaded = format::load(path)?;
     let model = &mut loaded.model;
     println!(
-        "{}: {} segments, {} SSVs, {} pairs, d_a = {} m",
-        "data/humanoid.toml",
+        "data/humanoid.toml: {} segments, {} SSVs, {} pairs, d_a = {} m",
         model.segments().len(),
         model.ssv_count(),
         model.pairs().len(),

@@ -7,7 +7,7 @@
 //! form and without NaN for any valid input. [`Segment`]s group the SSVs of one body, with a
 //! tight oriented bounding box as a cheap pre-check, and a [`CollisionModel`] evaluates the
 //! segment pairs of a whole robot from its body poses without allocating; collision models
-//! are read from TOML files ([`format`]).
+//! are read from TOML files ([`format`](mod@format)).
 //!
 //! # Example
 //!
@@ -45,8 +45,8 @@
 //! - [`segment`]: [`Segment`]s of SSVs in a body frame, mirroring, reduced versions, pair queries.
 //! - [`obb`]: oriented bounding boxes and their enlarged overlap test.
 //! - [`model`]: [`CollisionModel`], segments on bodies, segment pairs and `d_a`.
-//! - [`format`]: the TOML file format of collision models (load, save).
-//! - [`error`]: [`SsvError`], invalid primitive input.
+//! - [`format`](mod@format): the TOML file format of collision models (load, save).
+//! - [`error`]: [`SsvError`], the error of invalid primitive input.
 
 pub mod distance;
 pub mod error;

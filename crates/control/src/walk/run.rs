@@ -96,9 +96,9 @@ pub struct WalkRun {
 ///
 /// let lola = build(LolaType::Type2)?;
 /// let params = PatternParams {
-///     start_time: 0.4,
-///     end_time: 0.4,
-///     ..walk_pattern_params(&lola, 3, 0.3, 0.8)?
+///     start_time: 0.3,
+///     end_time: 0.3,
+///     ..walk_pattern_params(&lola, 3, 0.3, 0.6)?
 /// };
 /// let pattern = WalkingPattern::generate(&params)?;
 /// let still = run_walk(&lola, &pattern, Method::None, WalkParams::default())?.summary;
