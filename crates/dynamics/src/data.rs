@@ -27,6 +27,35 @@ use nalgebra::{
 /// Exception: O(n) forward dynamics skips Harmonic Drive rotors whose inertia is axisymmetric
 /// about their spin axis (their kinematics, and `acc` of sub-system members without children
 /// outside, are left as they were; see [`crate::forward_dynamics_kinematics`]).
+///
+/// # Example
+///
+/// A double pendulum hanging along `-z` with joints about `y`: the elbow sits at
+/// `l (-sin q1, 0, -cos q1)`, and the upper link turns at `(0, qd1, 0)`.
+///
+/// ```
+/// use biped_dynamics::{forward_kinematics, BodySpec, Data, JointModel, ModelBuilder};
+/// use biped_dynamics::RigidInertia;
+/// use nalgebra::{DVector, Isometry3, Matrix3, Vector3};
+///
+/// let l = 0.4;
+/// let rod = RigidInertia::new(1.0, Vector3::new(0.0, 0.0, -l / 2.0), Matrix3::identity() * 1e-3)?;
+/// let hinge = JointModel::Revolute { axis: Vector3::y_axis() };
+/// let mut b = ModelBuilder::new();
+/// let upper = b.add_body(BodySpec::named("upper", None, hinge.clone(), Isometry3::identity(), rod))?;
+/// let at_tip = Isometry3::translation(0.0, 0.0, -l);
+/// b.add_body(BodySpec::named("lower", Some(upper), hinge, at_tip, rod))?;
+/// let model = b.build()?;
+///
+/// let mut data = Data::new(&model);
+/// let (q, v) = (DVector::from_vec(vec![0.5, -0.2]), DVector::from_vec(vec![1.5, 0.0]));
+/// forward_kinematics(&model, &mut data, &q, &v, &DVector::zeros(2))?;
+/// let elbow = Vector3::new(-l * 0.5_f64.sin(), 0.0, -l * 0.5_f64.cos());
+/// assert!((data.world_pos[1] - elbow).norm() < 1e-15);
+/// assert!((data.body_pose(1).translation.vector - elbow).norm() < 1e-15);
+/// assert!((data.vel[0].ang - Vector3::new(0.0, 1.5, 0.0)).norm() < 1e-15);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Clone, Debug)]
 pub struct Data {
     pub(crate) nq: usize,

@@ -1,4 +1,4 @@
-//! Sensor data given to the controller each control period (Fig. 2.1, issue item 3): joint
+//! Sensor data given to the controller each control period (Fig. 2.1): joint
 //! encoders, motor encoders, motor currents, foot force/torque sensors and an IMU on the
 //! floating base.
 //!

@@ -206,6 +206,26 @@ impl Tss {
 }
 
 /// Any of the three SSV primitives.
+///
+/// # Example
+///
+/// SSVs are usually defined in a body frame and moved with the body: a sphere 0.1 m along
+/// the body's x axis, with the body turned by 90 degrees about z, lands on the world y axis.
+///
+/// ```
+/// use biped_ssv::{distance, Pss, Ssv};
+/// use nalgebra::{Isometry3, Point3, Vector3};
+///
+/// let local = Ssv::from(Pss::new(Point3::new(0.1, 0.0, 0.0), 0.02)?);
+/// let pose = Isometry3::new(Vector3::new(0.0, 0.0, 1.0), Vector3::z() * std::f64::consts::FRAC_PI_2);
+/// let world = local.transformed(&pose);
+/// assert!((world.vertices()[0] - Point3::new(0.0, 0.1, 1.0)).norm() < 1e-15);
+///
+/// // two spheres: centre distance minus both radii
+/// let other = Ssv::from(Pss::new(Point3::new(0.0, 0.1, 1.5), 0.08)?);
+/// assert!((distance(&world, &other).distance - (0.5 - 0.02 - 0.08)).abs() < 1e-15);
+/// # Ok::<(), biped_ssv::SsvError>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Ssv {
     /// Point-swept sphere.

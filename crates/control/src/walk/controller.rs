@@ -34,6 +34,44 @@ pub struct CycleInfo {
 }
 
 /// Lola's walking IK with one arm method (see [`Method`]).
+///
+/// # Example
+///
+/// A walk of three 0.2 m steps, one [`Self::cycle`] per pattern sample. By the footstep plan
+/// (the first step is a half step, the last one closes the feet side by side) both feet end
+/// up `(3 - 1) * 0.2 = 0.4 m` ahead of where they started, which the kinematics of the final
+/// configuration confirms.
+///
+/// ```
+/// use biped_control::pattern::{PatternParams, WalkingPattern};
+/// use biped_control::walk::{walk_pattern_params, Method, WalkController, WalkParams};
+/// use biped_dynamics::{update_placements, Data};
+/// use biped_robots::lola::{build, LolaType};
+///
+/// let lola = build(LolaType::Type2)?;
+/// let params = PatternParams {
+///     start_time: 0.4,
+///     end_time: 0.4,
+///     ..walk_pattern_params(&lola, 3, 0.2, 0.6)?
+/// };
+/// let pattern = WalkingPattern::generate(&params)?;
+/// let mut walk = WalkController::new(&lola, Method::None, WalkParams::default(), &pattern)?;
+///
+/// let model = &lola.model;
+/// let mut data = Data::new(model);
+/// let soles = ["l_sole", "r_sole"].map(|n| model.body_id(n).unwrap());
+/// update_placements(model, &mut data, walk.q())?;
+/// let start = soles.map(|b| data.world_pos[b]);
+/// for sample in pattern.iter() {
+///     walk.cycle(sample, params.dt)?;
+/// }
+/// update_placements(model, &mut data, walk.q())?;
+/// for (k, &b) in soles.iter().enumerate() {
+///     let moved = data.world_pos[b] - start[k];
+///     assert!((moved.x - 0.4).abs() < 2e-3 && moved.y.abs() < 2e-3 && moved.z.abs() < 2e-3);
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct WalkController {
     method: Method,

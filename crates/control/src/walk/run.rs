@@ -82,6 +82,32 @@ pub struct WalkRun {
 }
 
 /// Runs the IK over every sample of `pattern` with `method` and evaluates each cycle.
+///
+/// # Example
+///
+/// A short walk with the arms held still and one with momentum minimisation (7.5): one
+/// evaluated cycle per pattern sample, no self-collision, and the free arms reduce the peak
+/// vertical angular momentum `L_z`.
+///
+/// ```
+/// use biped_control::pattern::{PatternParams, WalkingPattern};
+/// use biped_control::walk::{run_walk, walk_pattern_params, Method, WalkParams};
+/// use biped_robots::lola::{build, LolaType};
+///
+/// let lola = build(LolaType::Type2)?;
+/// let params = PatternParams {
+///     start_time: 0.3,
+///     end_time: 0.3,
+///     ..walk_pattern_params(&lola, 3, 0.3, 0.6)?
+/// };
+/// let pattern = WalkingPattern::generate(&params)?;
+/// let still = run_walk(&lola, &pattern, Method::None, WalkParams::default())?.summary;
+/// let free = run_walk(&lola, &pattern, Method::Minimization, WalkParams::default())?.summary;
+/// assert_eq!(still.cycles, pattern.len());
+/// assert!(still.min_distance > 0.0 && free.min_distance > 0.0);
+/// assert!(free.peak_abs_lz < still.peak_abs_lz);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn run_walk(
     lola: &LolaModel,
     pattern: &WalkingPattern,

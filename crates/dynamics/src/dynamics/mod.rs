@@ -29,6 +29,33 @@ pub enum Algorithm {
 /// wrenches (one per body, body frame); result is also in `data.ddq`.
 ///
 /// Equals [`forward_dynamics_kinematics`] followed by [`forward_dynamics_solve`].
+///
+/// # Example
+///
+/// The floating G1 at a generic state: the three methods agree, and inverse dynamics of the
+/// result gives back the applied torques.
+///
+/// ```
+/// use biped_dynamics::urdf::{load_file, UrdfOptions};
+/// use biped_dynamics::{forward_dynamics, inverse_dynamics, nearby_state, Algorithm, Data};
+/// use nalgebra::DVector;
+///
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/g1_29dof_rev_1_0.urdf");
+/// let model = load_file(path, &UrdfOptions { floating: true, ..Default::default() })?.model;
+/// let mut data = Data::new(&model);
+/// // every coordinate moved a little off the neutral pose, every velocity 1e-3
+/// let (q, v) = nearby_state(&model, &model.neutral(), &DVector::zeros(model.nv()))?;
+/// let tau = DVector::from_fn(model.nv(), |i, _| 0.1 * (i as f64).sin());
+///
+/// let on = forward_dynamics(&model, &mut data, &q, &v, &tau, None, Algorithm::On)?.clone();
+/// for algo in [Algorithm::Crba, Algorithm::Sparse] {
+///     let other = forward_dynamics(&model, &mut data, &q, &v, &tau, None, algo)?;
+///     assert!((other - &on).amax() < 1e-9 * on.amax());
+/// }
+/// let back = inverse_dynamics(&model, &mut data, &q, &v, &on, None)?;
+/// assert!((back - &tau).amax() < 1e-9);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn forward_dynamics<'d>(
     model: &Model,
     data: &'d mut Data,
@@ -104,6 +131,33 @@ fn same_bits(a: &[f64], b: &[f64]) -> bool {
 /// Needs the kinematics of a preceding [`forward_dynamics_kinematics`] (or [`forward_dynamics`])
 /// on the same `data` with no other kinematics call in between, else
 /// [`DynamicsError::KinematicsNotCurrent`]. May be called repeatedly (e.g. for several `tau`).
+///
+/// # Example
+///
+/// The two phases with a contact-like force computed in between from the body poses, and
+/// the bit-equal one-call form.
+///
+/// ```
+/// use biped_dynamics::{dill::dill, forward_dynamics, forward_dynamics_kinematics};
+/// use biped_dynamics::{forward_dynamics_solve, Algorithm, Data, Wrench};
+/// use nalgebra::{DVector, Vector3};
+///
+/// let model = dill(3)?; // 8 revolute bodies
+/// let mut data = Data::new(&model);
+/// let (q, v) = (DVector::from_element(8, 0.4), DVector::from_element(8, 0.5));
+/// let tau = DVector::zeros(8);
+///
+/// forward_dynamics_kinematics(&model, &mut data, &q, &v)?;
+/// // push the last body up with 1 N at its origin, in its own frame
+/// let up = data.world_rot[7].transpose() * Vector3::z();
+/// let mut fext = vec![Wrench::zero(); model.nbodies()];
+/// fext[7] = Wrench::new(Vector3::zeros(), up);
+/// let split = forward_dynamics_solve(&model, &mut data, &tau, Some(&fext), Algorithm::On)?.clone();
+///
+/// let one = forward_dynamics(&model, &mut data, &q, &v, &tau, Some(&fext), Algorithm::On)?;
+/// assert_eq!(one, &split);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn forward_dynamics_solve<'d>(
     model: &Model,
     data: &'d mut Data,
@@ -144,6 +198,31 @@ pub fn forward_dynamics_solve<'d>(
 }
 
 /// Joint-space mass matrix `M(q)` by CRBA (symmetric, full storage), also in `data.mass`.
+///
+/// # Example
+///
+/// Checked column by column against RNEA: without gravity and at rest,
+/// `inverse_dynamics(q, 0, e_j)` is the `j`-th column of `M`.
+///
+/// ```
+/// use biped_dynamics::{dill::dill, inverse_dynamics, mass_matrix, Data};
+/// use nalgebra::DVector;
+///
+/// let model = dill(2)?;
+/// let mut data = Data::new(&model);
+/// let q = DVector::from_vec(vec![0.1, -0.7, 1.2, 0.4]);
+/// let m = mass_matrix(&model, &mut data, &q)?.clone();
+/// assert!((&m - m.transpose()).amax() == 0.0);
+///
+/// let bias = inverse_dynamics(&model, &mut data, &q, &DVector::zeros(4), &DVector::zeros(4), None)?
+///     .clone(); // gravity torques only
+/// for j in 0..4 {
+///     let e_j = DVector::from_fn(4, |i, _| if i == j { 1.0 } else { 0.0 });
+///     let col = inverse_dynamics(&model, &mut data, &q, &DVector::zeros(4), &e_j, None)? - &bias;
+///     assert!((col - m.column(j)).amax() < 1e-12);
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn mass_matrix<'d>(
     model: &Model,
     data: &'d mut Data,
@@ -161,6 +240,28 @@ pub fn mass_matrix<'d>(
 }
 
 /// Inverse dynamics `tau = M(q) a + h(q, v) - J^T f_ext` by RNEA, also in `data.tau`.
+///
+/// # Example
+///
+/// A free 3 kg box hovering at rest needs the generalized force `m g` upwards on its base
+/// (free-joint velocities are `[linear; angular]` in the body frame).
+///
+/// ```
+/// use biped_dynamics::{inverse_dynamics, BodySpec, Data, JointModel, ModelBuilder};
+/// use biped_dynamics::RigidInertia;
+/// use nalgebra::{DVector, Isometry3, Matrix3, Vector3};
+///
+/// let inertia = RigidInertia::new(3.0, Vector3::zeros(), Matrix3::identity() * 0.05)?;
+/// let mut b = ModelBuilder::new();
+/// b.add_body(BodySpec::named("box", None, JointModel::FreeQuaternion, Isometry3::identity(), inertia))?;
+/// let model = b.build()?;
+/// let mut data = Data::new(&model);
+/// let zero = DVector::zeros(6);
+/// let tau = inverse_dynamics(&model, &mut data, &model.neutral(), &zero, &zero, None)?;
+/// let expected = [0.0, 0.0, 3.0 * 9.81, 0.0, 0.0, 0.0];
+/// assert!(tau.iter().zip(expected).all(|(t, e)| (t - e).abs() < 1e-12));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn inverse_dynamics<'d>(
     model: &Model,
     data: &'d mut Data,

@@ -1,4 +1,4 @@
-//! Statically dispatched mechanisms of coupled bodies (issue item 1): an enum over the
+//! Statically dispatched mechanisms of coupled bodies: an enum over the
 //! concrete [`Coupling`] types, plus two closed-form test mechanisms (a linear gear and a
 //! planar four-bar coupler). Adding a mechanism type is one line in `mechanisms!`.
 

@@ -42,7 +42,7 @@ pub enum JointModel {
         /// Body whose (one-DoF) joint coordinate drives the rotor.
         driver: BodyId,
     },
-    /// Coupled part (issue item 1): relative motion `mechanism(q_in)` where `q_in` are the
+    /// Coupled part: relative motion `mechanism(q_in)` where `q_in` are the
     /// joint coordinates of the one-DoF bodies `inputs`; no own coordinates (its index set
     /// (2.26) is the inputs'), so it ends up in a sub-system (2.9). The geared rotor is the
     /// linear one-input case.

@@ -166,6 +166,65 @@ impl Body {
 }
 
 /// Immutable multibody model (topology, joints, inertias, gravity).
+///
+/// Built once, by [`ModelBuilder`] (bodies parent-first), by [`crate::urdf::load_file`] or by
+/// [`crate::dill::dill`]; every algorithm takes it by reference together with a [`crate::Data`]
+/// workspace made for it.
+///
+/// # Examples
+///
+/// A floating box carrying an arm with one revolute joint: the free quaternion joint has
+/// `nq = 7`, `nv = 6`, the revolute joint one of each.
+///
+/// ```
+/// use biped_dynamics::{BodySpec, JointModel, ModelBuilder, RigidInertia};
+/// use nalgebra::{Isometry3, Matrix3, Vector3};
+///
+/// let inertia = RigidInertia::new(1.0, Vector3::zeros(), Matrix3::identity() * 0.01)?;
+/// let mut b = ModelBuilder::new();
+/// let base = b.add_body(BodySpec::named(
+///     "base", None, JointModel::FreeQuaternion, Isometry3::identity(), inertia,
+/// ))?;
+/// b.add_body(BodySpec::named(
+///     "arm",
+///     Some(base),
+///     JointModel::Revolute { axis: Vector3::z_axis() },
+///     Isometry3::translation(0.0, 0.0, 0.2),
+///     inertia,
+/// ))?;
+/// let model = b.build()?;
+/// assert_eq!((model.nq(), model.nv(), model.nbodies()), (8, 7, 2));
+/// assert_eq!(model.body_names(), ["base", "arm"]);
+/// assert_eq!(model.body_id("arm"), Some(1));
+/// // neutral: base at the origin with the identity quaternion [0, 0, 0, 1], arm at 0
+/// assert_eq!(model.neutral().as_slice(), &[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0]);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// From the bundled Unitree G1 URDF with a floating base: 29 revolute joints plus the free
+/// root, and the total mass equals the sum of the file's `<mass>` tags (fixed joints merge
+/// links, they do not drop them).
+///
+/// ```
+/// use biped_dynamics::urdf::{load_file, UrdfOptions};
+/// use biped_dynamics::{center_of_mass, Data};
+///
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/g1_29dof_rev_1_0.urdf");
+/// let options = UrdfOptions { floating: true, ..UrdfOptions::default() };
+/// let model = load_file(path, &options)?.model;
+/// assert_eq!((model.nq(), model.nv()), (7 + 29, 6 + 29));
+/// assert_eq!(model.joints().len(), 30); // "root" and the 29 revolute joints
+///
+/// let text = std::fs::read_to_string(path)?;
+/// let mut file_mass = 0.0;
+/// for tail in text.split("<mass value=\"").skip(1) {
+///     file_mass += tail[..tail.find('"').unwrap()].parse::<f64>()?;
+/// }
+/// let mut data = Data::new(&model);
+/// let com = center_of_mass(&model, &mut data, &model.neutral(), None)?;
+/// assert!((com.mass - file_mass).abs() < 1e-9 && (file_mass - 33.34).abs() < 0.01);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Clone, Debug)]
 pub struct Model {
     pub(crate) bodies: Vec<Body>,

@@ -72,6 +72,27 @@ pub struct UrdfModel {
 }
 
 /// Reads and converts a URDF file.
+///
+/// # Example
+///
+/// The bundled Unitree G1 welded to the world at its pelvis: 29 revolute joints, each with
+/// its `<limit>` kept in [`UrdfModel::joints`], and every link findable by name.
+///
+/// ```
+/// use biped_dynamics::urdf::{load_file, UrdfOptions};
+///
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/g1_29dof_rev_1_0.urdf");
+/// let g1 = load_file(path, &UrdfOptions::default())?;
+/// assert_eq!((g1.model.nq(), g1.model.nv()), (29, 29));
+/// assert_eq!(g1.joints.len(), 29);
+/// let knee = g1.joints.iter().find(|j| j.name == "left_knee_joint").unwrap();
+/// // the file: <limit lower="-0.087267" upper="2.8798" effort="139" velocity="20"/>
+/// assert_eq!(knee.range, Some([-0.087267, 2.8798]));
+/// assert_eq!((knee.effort, knee.velocity), (Some(139.0), Some(20.0)));
+/// let foot = g1.links.iter().find(|l| l.link == "left_ankle_roll_link").unwrap();
+/// assert_eq!(g1.model.body(foot.body.unwrap()).unwrap().name(), "left_ankle_roll_link");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn load_file(path: impl AsRef<Path>, options: &UrdfOptions) -> Result<UrdfModel, UrdfError> {
     let path = path.as_ref();
     let file = path.display().to_string();

@@ -56,6 +56,40 @@ pub struct LolaCollision {
 }
 
 /// The shipped collision model of the Lola-like robot bound to `lola`'s body indices.
+///
+/// # Example
+///
+/// Body poses come from the model's kinematics through [`LolaCollision::model_bodies`].
+/// Distances between the robot's own parts do not change when the whole robot is moved.
+///
+/// ```
+/// use biped_dynamics::{update_placements, Data};
+/// use biped_robots::lola::{build, lola_collision_model, LolaType};
+/// use nalgebra::{DVector, UnitQuaternion, Vector3};
+///
+/// let lola = build(LolaType::Type2)?;
+/// let mut collision = lola_collision_model(&lola)?;
+/// let mut data = Data::new(&lola.model);
+/// let mut distances_at = |q: &DVector<f64>| -> Result<Vec<Option<f64>>, Box<dyn std::error::Error>> {
+///     update_placements(&lola.model, &mut data, q)?;
+///     let poses: Vec<_> = collision.model_bodies.iter().map(|&b| data.body_pose(b)).collect();
+///     collision.model.update(&poses)?;
+///     Ok(collision.model.results().iter().map(|r| r.distance()).collect())
+/// };
+/// let q = lola.model.neutral();
+/// let here = distances_at(&q)?;
+/// assert!(here.iter().flatten().all(|&d| d > 0.0)); // nothing touches at the neutral pose
+///
+/// let mut moved = q.clone(); // base shifted and turned about z
+/// moved.fixed_rows_mut::<3>(0).copy_from(&Vector3::new(1.0, -2.0, 0.3));
+/// let turn = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.7);
+/// moved.fixed_rows_mut::<4>(3).copy_from(&turn.coords);
+/// for (a, b) in here.iter().zip(distances_at(&moved)?) {
+///     assert_eq!(a.is_some(), b.is_some());
+///     assert!((a.unwrap_or(0.0) - b.unwrap_or(0.0)).abs() < 1e-12);
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn lola_collision_model(lola: &LolaModel) -> Result<LolaCollision, LolaCollisionError> {
     collision_model_from_str(LOLA_SSV_TOML, LOLA_SSV_TOML_NAME, lola)
 }

@@ -94,6 +94,26 @@ pub struct LolaModel {
 }
 
 /// Builds the Lola-like model of the shipped parameter file.
+///
+/// # Example
+///
+/// The neutral pose stands upright with the base frame at the origin; the soles lie below
+/// it, left and right of the sagittal plane, mirror images of each other.
+///
+/// ```
+/// use biped_dynamics::{update_placements, Data};
+/// use biped_robots::lola::{build, LolaType};
+///
+/// let lola = build(LolaType::Type2)?;
+/// let model = &lola.model;
+/// let mut data = Data::new(model);
+/// update_placements(model, &mut data, &model.neutral())?;
+/// let left = data.world_pos[model.body_id("l_sole").unwrap()];
+/// let right = data.world_pos[model.body_id("r_sole").unwrap()];
+/// assert!(left.z < -0.5 && (left.z - right.z).abs() < 1e-12);
+/// assert!(left.y > 0.0 && (left.y + right.y).abs() < 1e-12);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn build(variant: LolaType) -> Result<LolaModel, LolaError> {
     build_from_str(LOLA_TOML, LOLA_TOML_NAME, variant)
 }

@@ -5,7 +5,7 @@ use crate::error::{positive, SimError};
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
-/// Parameters of the compliant point contact with flat ground (issue item 5).
+/// Parameters of the compliant point contact with flat ground.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ContactParams {
     /// Normal stiffness `k` of one point \[N/m^e].

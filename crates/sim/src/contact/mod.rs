@@ -1,4 +1,4 @@
-//! Foot-ground contact (issue item 5, contact layer of Table 2.3): compliant point contacts on
+//! Foot-ground contact (the contact layer of Table 2.3): compliant point contacts on
 //! each foot sole against flat ground, a nonlinear spring-damper normal law and regularised
 //! Coulomb friction with two elastic tangential states per point ([`law`]).
 //!
@@ -11,7 +11,7 @@
 //! runs one kinematics pass; without a dynamics call (sensor outputs, energy, lowest point)
 //! each foot's own joint chain ([`chain::BodyChain`]) gives them instead.
 //!
-//! Stiffness and the 1 ms RK4 step (issue item 9). RK4 is stable for `h lambda` on the
+//! Stiffness and the 1 ms RK4 step. RK4 is stable for `h lambda` on the
 //! negative real axis down to -2.78 and for oscillations up to `h omega ~ 2.8`. The defaults
 //! (per point 2e5 N/m, 400 N s/m, 8 points per foot) give Lola's foot, whose joint-space
 //! inertia includes the reflected rotor inertias, vertical and tilt modes with

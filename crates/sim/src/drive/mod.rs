@@ -1,4 +1,4 @@
-//! Drive models (issue item 4, drive dynamics of Table 2.3): DC/brushless motor electrics
+//! Drive models (the drive dynamics of Table 2.3): DC/brushless motor electrics
 //! `L di/dt = u - R i - k_e omega`, torque `k_t i`, gear friction (viscous + smoothed Coulomb)
 //! with a load-dependent efficiency loss, and the transmission from motor to joints
 //! ([`actuator`]).
@@ -9,7 +9,7 @@
 //! `n = N` (the ratio), for the knee and ankle roller screws `n(q)` is the screw ratio times
 //! the nut-travel Jacobian (3.5), (3.32), read from the rotor part's mechanism.
 //!
-//! Modes and stability at the control period (the design choice of issue item 9):
+//! Modes and stability at the control period:
 //! - [`DriveMode::Torque`]: ideal joint torque; no electrical states.
 //! - [`DriveMode::Current`]: ideal current loop (`i = i_cmd`, clamped to `max_current`); no
 //!   electrical states, so RK4 at h = 1 ms is not limited by the electrical time constant.

@@ -1,5 +1,5 @@
 //! First-order systems `zdot = f(t, z)` (2.2)-(2.4) and the integrators that advance them
-//! (thesis 2.1; issue 5 points 2 and 6).
+//! (thesis 2.1).
 //!
 //! Integrators are generic over [`OdeSystem`]; nothing here knows about robots.
 //!

@@ -1,4 +1,4 @@
-//! Scenarios (issue item 7): `drop` (falls from 5 cm with joints held by PD control), `stand`
+//! Scenarios: `drop` (falls from 5 cm with joints held by PD control), `stand`
 //! (stands under joint position control and comes to rest) and `sway` (shifts its pelvis and
 //! CoM between the feet by hip and ankle adduction trajectories). Each builds the initial
 //! state and the controller for a plant and carries its pass criteria.
@@ -117,6 +117,32 @@ pub struct Scenario {
 }
 
 /// Builds `kind` for `plant` (torque mode) with `options`.
+///
+/// # Example
+///
+/// The Lola-like biped (Type 2) standing for a fifth of a second: the soles carry its weight
+/// (total mass from the model's centre of mass, times `g`) and the base does not sink.
+///
+/// ```
+/// use biped_dynamics::{center_of_mass, Data};
+/// use biped_robots::lola::LolaType;
+/// use biped_sim::plant::{lola_plant, PlantConfig};
+/// use biped_sim::scenario::{self, ScenarioKind, ScenarioOptions};
+/// use biped_sim::Method;
+///
+/// let mut lp = lola_plant(LolaType::Type2, PlantConfig::default())?;
+/// let model = &lp.lola.model;
+/// let mass = center_of_mass(model, &mut Data::new(model), &model.neutral(), None)?.mass;
+///
+/// let mut stand = scenario::build(ScenarioKind::Stand, &mut lp.plant, &ScenarioOptions::lola())?;
+/// stand.duration = 0.2;
+/// let base_z = stand.q0[2];
+/// let (summary, sim) = stand.run(lp.plant, Method::Rk4, &mut |_| Ok(()))?;
+/// assert_eq!(summary.control_cycles, 200);
+/// assert!((summary.final_contact_force - mass * 9.81).abs() < 0.01 * mass * 9.81);
+/// assert!((sim.state()[2] - base_z).abs() < 2e-3);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn build(
     kind: ScenarioKind,
     plant: &mut Plant,

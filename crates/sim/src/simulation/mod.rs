@@ -39,6 +39,12 @@ pub struct Frame<'a> {
 }
 
 /// Plant + integrator + controller.
+///
+/// Build it from a [`Plant`], any [`Controller`] of the plant's drive mode and an initial
+/// state ([`Plant::initial_state`]), then [`Self::run`] it for a duration, as often as you
+/// like: each run continues from where the last one ended. The crate-level example measures
+/// a pendulum's period with it; [`crate::scenario::build`] sets up a standing robot and
+/// [`crate::controller::Controller`] shows a controller of one's own.
 pub struct Simulation<C> {
     plant: Plant,
     controller: C,

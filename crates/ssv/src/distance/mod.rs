@@ -57,6 +57,29 @@ use crate::primitives::Ssv;
 use crate::result::DistanceResult;
 
 /// Distance between any two SSVs; the lower-triangle pairs of Table 6.1 use the swap relation.
+///
+/// # Example
+///
+/// A horizontal capsule 2 m above a rounded plate (triangle in the `z = 0` plane), both of
+/// radius 0.5: the capsule's axis lies above the triangle's interior, so by hand
+/// `d = 2 - 0.5 - 0.5 = 1`, the normal points straight up and the closest point on the plate
+/// is the foot of the perpendicular.
+///
+/// ```
+/// use biped_ssv::{distance, Lss, Ssv, Tss};
+/// use nalgebra::{Point3, Vector3};
+///
+/// let arm = Lss::new(Point3::new(0.1, 0.1, 2.0), Point3::new(0.2, 0.1, 2.0), 0.5)?;
+/// let plate = Tss::new(
+///     Point3::origin(), Point3::new(1.0, 0.0, 0.0), Point3::new(0.0, 1.0, 0.0), 0.5,
+/// )?;
+/// let r = distance(&Ssv::from(plate), &Ssv::from(arm));
+/// assert!((r.distance - 1.0).abs() < 1e-12);
+/// assert!((r.normal - Vector3::z()).norm() < 1e-12);
+/// assert!(r.closest_a.z.abs() < 1e-12 && (r.closest_a.y - 0.1).abs() < 1e-12);
+/// assert!((r.connecting() - r.normal * r.distance).norm() < 1e-12);
+/// # Ok::<(), biped_ssv::SsvError>(())
+/// ```
 #[inline]
 pub fn distance(a: &Ssv, b: &Ssv) -> DistanceResult {
     match (a, b) {

@@ -105,6 +105,24 @@ pub struct LoadedModel {
 }
 
 /// Loads a model file; errors name the file, line and field.
+///
+/// # Example
+///
+/// The bundled humanoid model: one segment per `[[segment]]` table, a pose per body in each
+/// named posture, and every pair at a non-negative distance when standing.
+///
+/// ```
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/humanoid.toml");
+/// let mut loaded = biped_ssv::format::load(path)?;
+/// let text = std::fs::read_to_string(path)?;
+/// assert_eq!(loaded.model.segments().len(), text.matches("[[segment]]").count());
+/// let standing = &loaded.poses["standing"];
+/// assert_eq!(standing.len(), loaded.model.bodies().len());
+/// loaded.model.update(standing)?;
+/// let (_, closest) = loaded.model.min_distance().unwrap();
+/// assert!(closest.result.distance >= 0.0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn load(path: impl AsRef<Path>) -> Result<LoadedModel, FormatError> {
     let path = path.as_ref();
     let file = path.display().to_string();

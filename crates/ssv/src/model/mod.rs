@@ -62,6 +62,37 @@ pub struct SegmentPair {
 }
 
 /// Segments on bodies, the pairs to check and the activation distance `d_a`.
+///
+/// # Example
+///
+/// A hand (sphere of radius 0.04 at the end of the forearm body) and a thigh (capsule of
+/// radius 0.06 along its body's `-z`), built in code. With the hand 0.2 m beside the thigh
+/// axis the pair is beyond `d_a = 0.05`; moved to 0.13 m, by hand
+/// `d = 0.13 - 0.04 - 0.06 = 0.03`.
+///
+/// ```
+/// use biped_ssv::{CollisionModel, Lss, Pss, Segment, Ssv};
+/// use nalgebra::{Isometry3, Point3};
+///
+/// let mut model = CollisionModel::new(vec!["thigh".into(), "forearm".into()], 0.05)?;
+/// let thigh = Lss::new(Point3::origin(), Point3::new(0.0, 0.0, -0.4), 0.06)?;
+/// let hand = Pss::new(Point3::new(0.0, 0.0, -0.25), 0.04)?;
+/// let a = model.add_segment(Segment::new("thigh", vec![Ssv::from(thigh)])?, 0)?;
+/// let b = model.add_segment(Segment::new("hand", vec![Ssv::from(hand)])?, 1)?;
+/// model.add_pair(a, b)?;
+///
+/// let thigh_pose = Isometry3::translation(0.0, 0.0, 0.9);
+/// model.update(&[thigh_pose, Isometry3::translation(0.0, 0.2, 1.0)])?;
+/// assert!(model.min_distance().is_none()); // every pair beyond d_a
+///
+/// model.update(&[thigh_pose, Isometry3::translation(0.0, 0.13, 1.0)])?;
+/// let (pair, closest) = model.min_distance().unwrap();
+/// assert_eq!(pair, 0);
+/// assert!((closest.result.distance - 0.03).abs() < 1e-12);
+/// // the closest point on the thigh's surface faces the hand, at the hand's height
+/// assert!((closest.result.point_a - Point3::new(0.0, 0.06, 0.75)).norm() < 1e-12);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct CollisionModel {
     bodies: Vec<String>,

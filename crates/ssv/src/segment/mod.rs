@@ -45,6 +45,27 @@ pub enum SegmentError {
 }
 
 /// A named compound of SSVs in a body frame with its tight OBB (SSV_Segment of Fig. 6.14).
+///
+/// # Example
+///
+/// A right shank (capsule 0.1 m to the right of the body origin, radius 0.05) and its mirror
+/// image about the body's `xz` plane as the left shank: at the identity pose the two axes are
+/// 0.2 m apart, so by hand `d = 0.2 - 2 * 0.05 = 0.1`. With an activation distance below that,
+/// the enlarged bounding boxes already rule the pair out.
+///
+/// ```
+/// use biped_ssv::segment::segment_pair_distance;
+/// use biped_ssv::{Lss, MirrorPlane, PairDistance, Segment, Ssv};
+/// use nalgebra::Point3;
+///
+/// let axis = Lss::new(Point3::new(0.0, -0.1, 0.0), Point3::new(0.0, -0.1, -0.4), 0.05)?;
+/// let right = Segment::new("shank_r", vec![Ssv::from(axis)])?;
+/// let left = right.mirrored("shank_l", MirrorPlane::Xz);
+/// let d = segment_pair_distance(&right, &left, 0.5).distance().unwrap();
+/// assert!((d - 0.1).abs() < 1e-12);
+/// assert_eq!(segment_pair_distance(&right, &left, 0.05), PairDistance::Beyond);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Segment {
     name: String,

@@ -1,6 +1,5 @@
 //! `biped walk --dynamic`: the kinematic walk tracked by joint controllers in the full contact
-//! simulation of `biped_sim` (issue 6 point 7; thesis 2.1 Fig. 2.1 for the loop, 4.5 / 7.3 for
-//! the walk).
+//! simulation of `biped_sim` (thesis 2.1 Fig. 2.1 for the loop, 4.5 / 7.3 for the walk).
 //!
 //! - [`mod@reference`]: the kinematic walk of one arm method sampled at 1 kHz: actuated joints'
 //!   `q`, `qdot`, feedforward torques, planned base position, support phase.
