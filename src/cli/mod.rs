@@ -2,6 +2,7 @@
 
 pub mod calibrate;
 pub mod dynamics;
+mod json_lines;
 pub mod simulate;
 pub mod ssv;
 pub mod walk;

@@ -46,14 +46,49 @@ fn error_with(from: &str, to: &str) -> (usize, String) {
 #[test]
 fn arrays_of_the_wrong_length_are_located_errors() {
     let cases = [
-        (r#"["s0", "s1"]"#, r#"["s0", "s1", "s2"]"#, 3, "length 3, expected an array of length 2"),
-        ("[0.0, 0.0, 0.0], radius = 0.1", "[0.0, 0.0, 0.0, 0.5], radius = 0.1", 9, "length 4"),
-        ("[0.0, 0.0, 0.3]]", "[0.0, 0.0, 0.3], [1.0, 0.0, 0.0]]", 10, "length 3"),
-        ("[0.0, 0.1, 0.0]]", "[0.0, 0.1, 0.0], [0.0, 0.0, 1.0]]", 16, "length 4"),
+        (
+            r#"["s0", "s1"]"#,
+            r#"["s0", "s1", "s2"]"#,
+            3,
+            "length 3, expected an array of length 2",
+        ),
+        (
+            "[0.0, 0.0, 0.0], radius = 0.1",
+            "[0.0, 0.0, 0.0, 0.5], radius = 0.1",
+            9,
+            "length 4",
+        ),
+        (
+            "[0.0, 0.0, 0.3]]",
+            "[0.0, 0.0, 0.3], [1.0, 0.0, 0.0]]",
+            10,
+            "length 3",
+        ),
+        (
+            "[0.0, 0.1, 0.0]]",
+            "[0.0, 0.1, 0.0], [0.0, 0.0, 1.0]]",
+            16,
+            "length 4",
+        ),
         ("[0.0, 0.2, 0.0]", "[0.0, 0.2, 0.0, 9.0]", 20, "length 4"),
-        ("[0.1, 0.2, 0.3]", "[0.1, 0.2, 0.3, 0.4, 0.5]", 20, "length 5"),
-        ("[0.1, 0.2, 0.3]", "[0.1, 0.2]", 20, "length 2, expected an array of length 3"),
-        (r#"["s0", "s1"]"#, r#"["s0"]"#, 3, "length 1, expected an array of length 2"),
+        (
+            "[0.1, 0.2, 0.3]",
+            "[0.1, 0.2, 0.3, 0.4, 0.5]",
+            20,
+            "length 5",
+        ),
+        (
+            "[0.1, 0.2, 0.3]",
+            "[0.1, 0.2]",
+            20,
+            "length 2, expected an array of length 3",
+        ),
+        (
+            r#"["s0", "s1"]"#,
+            r#"["s0"]"#,
+            3,
+            "length 1, expected an array of length 2",
+        ),
     ];
     for (from, to, line, message) in cases {
         let (at, shown) = error_with(from, to);
