@@ -292,3 +292,98 @@ fn mimic_warns_by_default_and_reject_mimic_fails() {
         "{err}"
     );
 }
+
+mod jsonl;
+
+/// Valid requests for Dill(1) (two revolute bodies) in each mode.
+fn requests() -> [(&'static str, String); 3] {
+    [
+        (
+            "qdd",
+            json!({"q": [0.1, 0.2], "v": [0.0, 1.0], "tau": [0.5, -0.5]}).to_string(),
+        ),
+        (
+            "tau",
+            json!({"q": [0.1, 0.2], "v": [0.0, 1.0], "a": [0.5, -0.5]}).to_string(),
+        ),
+        ("M", json!({"q": [0.1, 0.2]}).to_string()),
+    ]
+}
+
+/// The arguments of `biped dynamics` for Dill(1) in the mode answering with `key`.
+fn mode_args(key: &str) -> Vec<&'static str> {
+    let mode = match key {
+        "qdd" => None,
+        "tau" => Some("--inverse"),
+        _ => Some("--mass-matrix"),
+    };
+    ["dynamics", "--dill", "1"]
+        .into_iter()
+        .chain(mode)
+        .collect()
+}
+
+/// A UTF-8 byte-order mark before the first request is ignored (it was a JSON syntax error).
+#[test]
+fn byte_order_mark_is_ignored() {
+    for (key, request) in requests() {
+        let out = run(&mode_args(key), &format!("\u{feff}{request}\n{request}\n"));
+        assert_eq!(out.status.code(), Some(0), "{key}");
+        let lines = json_lines(&out);
+        assert_eq!(lines[0], lines[1], "{key}");
+    }
+}
+
+/// Characters of JSON structure and numbers, for the corruptions below.
+const JSON_ALPHABET: &[u8] = b"{}[],:\"-+.eE09 \nqvta";
+
+/// One corrupted request: text corruptions (byte edits read back as UTF-8, structural
+/// edits, edge numbers) or raw byte edits that may leave invalid UTF-8.
+fn corrupted(request: String) -> impl proptest::strategy::Strategy<Value = Vec<u8>> {
+    use biped_test_support::mutate;
+    use proptest::prelude::*;
+    let bytes = request.clone().into_bytes();
+    prop_oneof![
+        mutate::corruptions(JSON_ALPHABET, 4).prop_map(move |c| c.apply(&request).into_bytes()),
+        mutate::byte_edits(3).prop_map(move |e| mutate::apply(&bytes, &e)),
+    ]
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(100))]
+
+    /// For each mode, batches of 1 to 30 corrupted requests (100 runs per mode, about 1 500
+    /// lines each): every non-blank line gets one answer with finite numbers or one error
+    /// naming it, in order, and the exit code says whether any line was bad.
+    #[test]
+    fn corrupted_requests_get_one_finite_answer_or_error_each(
+        batches in requests().map(|(_, r)| proptest::collection::vec(corrupted(r), 1..30)),
+    ) {
+        for ((key, _), batch) in requests().iter().zip(batches) {
+            let input: Vec<u8> = batch.iter().flat_map(|q| q.iter().chain(b"\n")).copied().collect();
+            let out = jsonl::run_bytes(&mode_args(key), &input);
+            let checked = jsonl::check_answers(&input, &out, key);
+            proptest::prop_assert!(checked.is_ok(), "{}: {:?}", key, checked);
+        }
+    }
+}
+
+/// 20 000 nested elements in a URDF: one located error line and exit code 1 (the process
+/// used to abort on a stack overflow).
+#[test]
+fn deeply_nested_urdf_is_one_error_line() {
+    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("deep.urdf");
+    let depth = 20_000;
+    let xml = format!(
+        "<robot name=\"deep\">\n<link name=\"a\">\n{}{}</link>\n</robot>\n",
+        "<x>".repeat(depth),
+        "</x>".repeat(depth)
+    );
+    std::fs::write(&path, xml).unwrap();
+    let out = run(&["model", "--urdf", path.to_str().unwrap(), "--json"], "");
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    let expected = format!("{}:3: elements nested deeper than", path.display());
+    assert!(err.contains(&expected), "{err}");
+}

@@ -623,6 +623,10 @@ fn bad_inputs_fail_with_one_line() {
     for (args, expected) in cases {
         fails_with("bad", args, expected);
     }
+    // An SRDF without group states (the G1 URDF itself is rejected as an SRDF).
+    let no_states = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("no_states.srdf");
+    std::fs::write(&no_states, "<robot name=\"g1\"><rotor_params/></robot>\n").unwrap();
+    let no_states = no_states.to_str().unwrap();
     // The same, after `--urdf G1 --floating --feet LEFT,RIGHT`.
     let on_g1: &[(&[&str], &[&str])] = &[
         (&["--scenario", "sway"], &["--sway-joints"]),
@@ -650,9 +654,10 @@ fn bad_inputs_fail_with_one_line() {
             &["--srdf", "/no/such.srdf", "cannot read SRDF"],
         ),
         (
-            &["--srdf", G1, "--srdf-state", "bent"],
+            &["--srdf", no_states, "--srdf-state", "bent"],
             &["--srdf-state", "no group_state `bent`", "(it has: none)"],
         ),
+        (&["--srdf", G1], &["--srdf", "looks like a URDF"]),
     ];
     for (extra, expected) in on_g1 {
         let mut args = vec!["--urdf", g1, "--floating", "--feet", feet];

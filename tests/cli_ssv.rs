@@ -115,3 +115,74 @@ fn model_bad_file_names_file_and_line() {
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("bad.toml:3"), "{err}");
 }
+
+mod jsonl;
+
+/// Valid queries of the three shapes, the start of every corrupted query below.
+const QUERIES: [&str; 3] = [
+    r#"{"a": {"point": [0,0,0], "radius": 1}, "b": {"point": [5,0,0], "radius": 1.5}}"#,
+    r#"{"a": {"line": [[0.1,0.1,2],[0.2,0.1,2]], "radius": 0.5}, "b": {"triangle": [[0,0,0],[1,0,0],[0,1,0]], "radius": 0.5}}"#,
+    r#"{"a": {"triangle": [[0,0,1],[1,0,1],[0,1,1.5]], "radius": 0.1}, "b": {"triangle": [[0,0,0],[1,0,0],[0,1,0]], "radius": 0}}"#,
+];
+
+/// A line that is not UTF-8 is answered with an error for that line and the queries after
+/// it are answered (`biped ssv query` used to stop there and drop them).
+#[test]
+fn non_utf8_line_is_an_error_and_the_rest_is_answered() {
+    let input = [
+        QUERIES[0].as_bytes(),
+        b"\n\xff\xfe{}\n",
+        QUERIES[1].as_bytes(),
+        b"\n",
+    ]
+    .concat();
+    let out = jsonl::run_bytes(&["ssv", "query"], &input);
+    assert_eq!(out.status.code(), Some(1));
+    let lines = json_lines(&out);
+    assert_eq!(lines.len(), 3);
+    let msg = lines[1]["error"].as_str().unwrap();
+    assert!(msg.starts_with("line 2: not UTF-8 text"), "{msg}");
+    assert!(close(lines[0]["distance"].as_f64().unwrap(), 2.5));
+    assert!(close(lines[2]["distance"].as_f64().unwrap(), 1.0));
+}
+
+/// A UTF-8 byte-order mark before the first query is ignored (it was a JSON syntax error).
+#[test]
+fn byte_order_mark_is_ignored() {
+    let (code, out) = query(&format!("\u{feff}{}\n", QUERIES[0]));
+    assert_eq!(code, 0, "{out:?}");
+    assert!(close(out[0]["distance"].as_f64().unwrap(), 2.5));
+}
+
+/// Characters of JSON structure and numbers, for the corruptions below.
+const JSON_ALPHABET: &[u8] = b"{}[],:\"-+.eE09 \nrpl";
+
+/// One corrupted query: text corruptions (byte edits read back as UTF-8, structural edits,
+/// edge numbers) or raw byte edits that may leave invalid UTF-8.
+fn corrupted_query() -> impl proptest::strategy::Strategy<Value = Vec<u8>> {
+    use biped_test_support::mutate;
+    use proptest::prelude::*;
+    let base = prop::sample::select(&QUERIES[..]);
+    prop_oneof![
+        (base.clone(), mutate::corruptions(JSON_ALPHABET, 4))
+            .prop_map(|(q, c)| c.apply(q).into_bytes()),
+        (base, mutate::byte_edits(3)).prop_map(|(q, e)| mutate::apply(q.as_bytes(), &e)),
+    ]
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(150))]
+
+    /// Batches of 1 to 40 corrupted queries (150 runs, about 3 000 lines): every non-blank
+    /// line gets one answer with finite numbers or one error naming it, in order, and the
+    /// exit code says whether any line was bad.
+    #[test]
+    fn corrupted_queries_get_one_finite_answer_or_error_each(
+        batch in proptest::collection::vec(corrupted_query(), 1..40),
+    ) {
+        let input: Vec<u8> = batch.iter().flat_map(|q| q.iter().chain(b"\n")).copied().collect();
+        let out = jsonl::run_bytes(&["ssv", "query"], &input);
+        let checked = jsonl::check_answers(&input, &out, "distance");
+        proptest::prop_assert!(checked.is_ok(), "{:?}", checked);
+    }
+}

@@ -3,6 +3,7 @@
 pub mod calibrate;
 pub mod dynamics;
 pub mod interrupt;
+mod json_lines;
 pub mod outdir;
 pub mod simulate;
 pub mod ssv;

@@ -1,5 +1,6 @@
 //! JSON Lines driver of `biped dynamics`: one request per input line, one answer per output line.
 
+use crate::cli::json_lines;
 use biped_dynamics::{forward_dynamics, inverse_dynamics, mass_matrix, Algorithm, Data, Model};
 use nalgebra::DVector;
 use serde::Deserialize;
@@ -27,37 +28,16 @@ struct Request {
 }
 
 /// Answers every non-blank line of `input` on `output`; returns false if any line was bad.
-/// Bad lines are answered with `{"error": "line N: .."}` and processing goes on.
+/// Bad lines are answered with `{"error": "line N: .."}` and processing goes on (see
+/// [`json_lines`]).
 pub fn run(
     model: &Model,
     mode: Mode,
-    mut input: impl BufRead,
-    mut output: impl Write,
+    input: impl BufRead,
+    output: impl Write,
 ) -> std::io::Result<bool> {
     let mut data = Data::new(model);
-    let mut all_good = true;
-    let mut buf = Vec::new();
-    let mut line_no = 0usize;
-    loop {
-        buf.clear();
-        if input.read_until(b'\n', &mut buf)? == 0 {
-            break;
-        }
-        line_no += 1;
-        let answer = match std::str::from_utf8(&buf) {
-            Ok(text) if text.trim().is_empty() => continue,
-            Ok(text) => answer(model, &mut data, mode, text),
-            Err(e) => Err(format!("not UTF-8 text: {e}")),
-        };
-        let value = answer.unwrap_or_else(|msg| {
-            all_good = false;
-            json!({ "error": format!("line {line_no}: {msg}") })
-        });
-        serde_json::to_writer(&mut output, &value)?;
-        output.write_all(b"\n")?;
-    }
-    output.flush()?;
-    Ok(all_good)
+    json_lines::serve(input, output, |line| answer(model, &mut data, mode, line))
 }
 
 /// The answer to one request line, or what is wrong with it.

@@ -1,10 +1,10 @@
 //! `biped ssv query`: JSON Lines in, one JSON line out per query.
 
-use crate::cli::CliResult;
+use crate::cli::{json_lines, CliResult};
 use biped_ssv::{distance, Lss, Pss, Ssv, SsvError, Tss};
 use nalgebra::Point3;
 use serde::{Deserialize, Serialize};
-use std::io::{BufRead, BufWriter, Write};
+use std::io::BufWriter;
 use std::process::ExitCode;
 
 /// One SSV as written in a query: exactly one of `point`, `line`, `triangle`, plus `radius`.
@@ -67,30 +67,12 @@ fn answer(line: &str) -> Result<AnswerJson, String> {
     })
 }
 
-/// Run the query loop over stdin; exit 1 if any line was bad.
+/// Run the query loop over stdin (see [`json_lines`]); exit 1 if any line was bad.
 pub fn run() -> CliResult {
     let stdin = std::io::stdin().lock();
-    let mut out = BufWriter::new(std::io::stdout().lock());
-    let mut all_ok = true;
-    for (index, line) in stdin.lines().enumerate() {
-        let line = line?;
-        if line.trim().is_empty() {
-            continue;
-        }
-        match answer(&line) {
-            Ok(ans) => serde_json::to_writer(&mut out, &ans)?,
-            Err(msg) => {
-                all_ok = false;
-                let msg = format!("line {}: {msg}", index + 1);
-                serde_json::to_writer(&mut out, &serde_json::json!({ "error": msg }))?;
-            }
-        }
-        out.write_all(b"\n")?;
-    }
-    out.flush()?;
-    Ok(if all_ok {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::FAILURE
+    let out = BufWriter::new(std::io::stdout().lock());
+    Ok(match json_lines::serve(stdin, out, answer)? {
+        true => ExitCode::SUCCESS,
+        false => ExitCode::FAILURE,
     })
 }

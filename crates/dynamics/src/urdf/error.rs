@@ -23,6 +23,14 @@ impl fmt::Display for Location {
     }
 }
 
+/// `file:line`, or `file` without a line.
+fn place(file: &str, line: Option<usize>) -> String {
+    match line {
+        Some(line) => format!("{file}:{line}"),
+        None => file.to_string(),
+    }
+}
+
 /// A well-formed element of a URDF or SRDF document whose content is unusable.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("{at}: {field}: {problem}")]
@@ -46,13 +54,33 @@ pub enum UrdfError {
         /// Underlying I/O error.
         source: std::io::Error,
     },
-    /// The text is not well-formed URDF XML (urdf-rs / XML parser message).
-    #[error("{file}: not a valid URDF document: {message}")]
+    /// The bytes are not UTF-8.
+    #[error("{file}:{line}: not UTF-8 text")]
+    NotUtf8 {
+        /// File name.
+        file: String,
+        /// 1-based line of the first invalid byte.
+        line: usize,
+    },
+    /// The text is not well-formed URDF XML (the importer's or urdf-rs' message).
+    #[error("{}: not a valid URDF document: {message}", place(file, *line))]
     Parse {
         /// File name.
         file: String,
+        /// 1-based line of the fault, when known (urdf-rs' messages have none).
+        line: Option<usize>,
         /// Parser message.
         message: String,
+    },
+    /// Elements nested deeper than the importer reads ([`MAX_DEPTH`](super::MAX_DEPTH)).
+    #[error("{file}:{line}: elements nested deeper than {limit} levels")]
+    TooDeep {
+        /// File name.
+        file: String,
+        /// 1-based line of the first element beyond the limit.
+        line: usize,
+        /// The nesting limit.
+        limit: usize,
     },
     /// An element is well-formed but its content is unusable.
     #[error(transparent)]

@@ -10,7 +10,7 @@
 //! - `<dynamics damping friction>`: viscous \[N m s/rad or N s/m] and Coulomb \[N m or N]
 //!   coefficients, 0 when absent; negative or non-finite values are errors.
 
-use super::tree::Source;
+use super::source::Source;
 use super::UrdfError;
 use crate::BodyId;
 use urdf_rs::JointType;

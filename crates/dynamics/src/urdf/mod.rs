@@ -15,8 +15,11 @@
 //! - Joint limits and `<dynamics>` are read into [`UrdfModel::joints`] ([`JointProps`], see
 //!   `joints` for their conventions); the model itself carries none of them.
 //! - Meshes, visuals, collisions and transmissions are ignored; `<visual>`,
-//!   `<collision>` and `<material>` elements are removed before parsing (see `strip`). `<mimic>` tags are
+//!   `<collision>` and `<material>` elements are removed before parsing (see `scan`). `<mimic>` tags are
 //!   ignored with a warning (the joints stay independent) unless [`UrdfOptions::reject_mimic`].
+//! - The root element must be `<robot>`, link and joint names must not be empty, and elements
+//!   may nest at most [`MAX_DEPTH`] levels (the text is checked in one pass before urdf-rs
+//!   reads it, so no input makes the import recurse deeply or take more than linear time).
 //! - Bodies and coordinates follow a depth-first traversal from the root, children in file order.
 //!
 //! The robot's SRDF adds what the URDF lacks for simulation ([`srdf`]): motor rotors and named
@@ -24,13 +27,17 @@
 
 mod error;
 mod joints;
-mod locate;
+mod lines;
+mod markup;
+mod scan;
+mod source;
 pub mod srdf;
-mod strip;
+mod topology;
 mod tree;
 
 pub use error::{InvalidElement, Location, UrdfError};
 pub use joints::JointProps;
+pub use scan::MAX_DEPTH;
 
 use crate::{BodyId, Model};
 #[cfg(doc)]
@@ -96,21 +103,44 @@ pub struct UrdfModel {
 pub fn load_file(path: impl AsRef<Path>, options: &UrdfOptions) -> Result<UrdfModel, UrdfError> {
     let path = path.as_ref();
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|source| UrdfError::Io {
-        file: file.clone(),
-        source,
+    let text = lines::read_text(path).map_err(|e| match e {
+        lines::ReadError::Io(source) => UrdfError::Io {
+            file: file.clone(),
+            source,
+        },
+        lines::ReadError::NotUtf8 { line } => UrdfError::NotUtf8 {
+            file: file.clone(),
+            line,
+        },
     })?;
     load_str(&text, &file, options)
 }
 
 /// Converts URDF text; `file` labels the source in error messages.
 pub fn load_str(xml: &str, file: &str, options: &UrdfOptions) -> Result<UrdfModel, UrdfError> {
-    let robot =
-        urdf_rs::read_from_string(&strip::strip_ignored(xml)).map_err(|e| UrdfError::Parse {
+    let scanned = scan::scan(xml).map_err(|e| match e {
+        scan::ScanError::Malformed { line, problem } => UrdfError::Parse {
             file: file.to_string(),
-            message: one_line(&e.to_string()),
-        })?;
-    tree::convert(&robot, &tree::Source { xml, file }, options)
+            line: Some(line),
+            message: lines::one_line(&problem),
+        },
+        scan::ScanError::TooDeep { line } => UrdfError::TooDeep {
+            file: file.to_string(),
+            line,
+            limit: MAX_DEPTH,
+        },
+    })?;
+    let src = source::Source {
+        scanned: &scanned,
+        file,
+    };
+    src.check_root()?;
+    let robot = urdf_rs::read_from_string(&scanned.stripped).map_err(|e| UrdfError::Parse {
+        file: file.to_string(),
+        line: None,
+        message: one_line(&e.to_string()),
+    })?;
+    tree::convert(&robot, &src, options)
 }
 
 /// Collapses a multi-line parser message into one line.

@@ -4,6 +4,7 @@
 //! so the joint's reflected inertia is `N^2 J`) and the named joint configurations
 //! (`<group_state>`, e.g. TALOS's `half_sitting`).
 
+use super::lines::{one_line, read_text, LineIndex, ReadError};
 use super::{InvalidElement, Location};
 use std::path::Path;
 
@@ -17,6 +18,14 @@ pub enum SrdfError {
         file: String,
         /// Underlying I/O error.
         source: std::io::Error,
+    },
+    /// The bytes are not UTF-8.
+    #[error("{file}:{line}: not UTF-8 text")]
+    NotUtf8 {
+        /// File name.
+        file: String,
+        /// 1-based line of the first invalid byte.
+        line: usize,
     },
     /// The text is not well-formed XML.
     #[error("{file}:{line}: not a valid SRDF document: {message}")]
@@ -88,26 +97,45 @@ impl Srdf {
 pub fn load_srdf_file(path: impl AsRef<Path>) -> Result<Srdf, SrdfError> {
     let path = path.as_ref();
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|source| SrdfError::Io {
-        file: file.clone(),
-        source,
+    let text = read_text(path).map_err(|e| match e {
+        ReadError::Io(source) => SrdfError::Io {
+            file: file.clone(),
+            source,
+        },
+        ReadError::NotUtf8 { line } => SrdfError::NotUtf8 {
+            file: file.clone(),
+            line,
+        },
     })?;
     parse_srdf(&text, &file)
 }
 
+/// The file label and line index of the text being parsed.
+struct Doc<'f> {
+    file: &'f str,
+    lines: LineIndex,
+}
+
 /// Parses SRDF `text` (`file` labels the errors): every `<rotor_params>` entry and every
 /// `<group_state>` of the root `<robot>`; other elements (groups, disabled collisions, ...)
-/// are not read. A missing or non-numeric attribute, a negative inertia or a gear ratio
-/// `<= 0` is an error at its line.
+/// are not read. A missing or non-numeric attribute, a negative inertia, a gear ratio `<= 0`
+/// or a reflected inertia `N^2 J` beyond f64 is an error at its line, and so is a URDF passed for an SRDF (its root `<robot>`
+/// has `<link>` or `<joint>` children). The XML reader (roxmltree) and this parser do not
+/// recurse on the element nesting, and locating lines is a binary search, so parsing is
+/// linear in the text.
 pub fn parse_srdf(text: &str, file: &str) -> Result<Srdf, SrdfError> {
-    let doc = roxmltree::Document::parse(text).map_err(|e| SrdfError::Parse {
+    let xml = roxmltree::Document::parse(text).map_err(|e| SrdfError::Parse {
         file: file.to_string(),
         line: e.pos().row,
-        message: e.to_string(),
+        message: one_line(&e.to_string()),
     })?;
-    let root = doc.root_element();
+    let doc = Doc {
+        file,
+        lines: LineIndex::new(text),
+    };
+    let root = xml.root_element();
     if !root.has_tag_name("robot") {
-        let at = locate(file, &root, format!("<{}>", root.tag_name().name()));
+        let at = doc.locate(&root, format!("<{}>", root.tag_name().name()));
         return Err(invalid(at, "root element", "must be <robot>"));
     }
     let mut out = Srdf::default();
@@ -115,10 +143,15 @@ pub fn parse_srdf(text: &str, file: &str) -> Result<Srdf, SrdfError> {
         match node.tag_name().name() {
             "rotor_params" => {
                 for j in joints(&node) {
-                    out.rotors.push(rotor(file, &j)?);
+                    out.rotors.push(rotor(&doc, &j)?);
                 }
             }
-            "group_state" => out.states.push(group_state(file, &node)?),
+            "group_state" => out.states.push(group_state(&doc, &node)?),
+            tag @ ("link" | "joint") => {
+                let at = doc.locate(&node, format!("<{tag}>"));
+                let problem = "an SRDF has no such child of <robot>: this file looks like a URDF";
+                return Err(invalid(at, "element", problem));
+            }
             _ => {}
         }
     }
@@ -131,9 +164,9 @@ fn joints<'a, 'i>(node: &roxmltree::Node<'a, 'i>) -> impl Iterator<Item = roxmlt
 }
 
 /// One `<rotor_params>` joint entry.
-fn rotor(file: &str, j: &roxmltree::Node) -> Result<RotorParams, SrdfError> {
-    let name = required(file, j, "rotor_params joint", "name")?;
-    let at = || locate(file, j, format!("rotor_params joint {name:?}"));
+fn rotor(doc: &Doc, j: &roxmltree::Node) -> Result<RotorParams, SrdfError> {
+    let name = doc.required(j, "rotor_params joint", "name")?;
+    let at = || doc.locate(j, format!("rotor_params joint {name:?}"));
     let inertia = number(at, j, "mass")?;
     let gear_ratio = number(at, j, "gear_ratio")?;
     if inertia < 0.0 {
@@ -142,21 +175,25 @@ fn rotor(file: &str, j: &roxmltree::Node) -> Result<RotorParams, SrdfError> {
     if gear_ratio <= 0.0 {
         return Err(invalid(at(), "gear_ratio", "must be > 0"));
     }
+    if !(gear_ratio * gear_ratio * inertia).is_finite() {
+        let problem = "the reflected inertia gear_ratio^2 * mass is too large for f64";
+        return Err(invalid(at(), "gear_ratio", problem));
+    }
     Ok(RotorParams {
         joint: name.to_string(),
         inertia,
         gear_ratio,
-        line: line_of(j),
+        line: doc.line_of(j),
     })
 }
 
 /// One `<group_state>` with its joint values.
-fn group_state(file: &str, node: &roxmltree::Node) -> Result<GroupState, SrdfError> {
-    let name = required(file, node, "group_state", "name")?;
+fn group_state(doc: &Doc, node: &roxmltree::Node) -> Result<GroupState, SrdfError> {
+    let name = doc.required(node, "group_state", "name")?;
     let mut joints_out = Vec::new();
     for j in joints(node) {
-        let joint = required(file, &j, "group_state joint", "name")?;
-        let at = || locate(file, &j, format!("group_state {name:?} joint {joint:?}"));
+        let joint = doc.required(&j, "group_state joint", "name")?;
+        let at = || doc.locate(&j, format!("group_state {name:?} joint {joint:?}"));
         let text = j
             .attribute("value")
             .ok_or_else(|| invalid(at(), "value", "missing"))?;
@@ -175,19 +212,36 @@ fn group_state(file: &str, node: &roxmltree::Node) -> Result<GroupState, SrdfErr
         name: name.to_string(),
         group: node.attribute("group").unwrap_or_default().to_string(),
         joints: joints_out,
-        line: line_of(node),
+        line: doc.line_of(node),
     })
 }
 
-/// Attribute `attr` of `node` (an `element` tag), or an error naming the element's line.
-fn required<'a>(
-    file: &str,
-    node: &roxmltree::Node<'a, '_>,
-    element: &str,
-    attr: &str,
-) -> Result<&'a str, SrdfError> {
-    node.attribute(attr)
-        .ok_or_else(|| invalid(locate(file, node, element.to_string()), attr, "missing"))
+impl Doc<'_> {
+    /// Attribute `attr` of `node` (an `element` tag), or an error naming the element's line.
+    fn required<'a>(
+        &self,
+        node: &roxmltree::Node<'a, '_>,
+        element: &str,
+        attr: &str,
+    ) -> Result<&'a str, SrdfError> {
+        node.attribute(attr)
+            .ok_or_else(|| invalid(self.locate(node, element.to_string()), attr, "missing"))
+    }
+
+    /// 1-based line of `node`'s start tag.
+    fn line_of(&self, node: &roxmltree::Node) -> u32 {
+        let line = self.lines.line_of(node.range().start);
+        u32::try_from(line).unwrap_or(u32::MAX)
+    }
+
+    /// The location of `node`, described as `element`.
+    fn locate(&self, node: &roxmltree::Node, element: String) -> Location {
+        Location {
+            file: self.file.to_string(),
+            line: Some(self.lines.line_of(node.range().start)),
+            element,
+        }
+    }
 }
 
 /// The finite number in attribute `attr` of `node`.
@@ -205,20 +259,6 @@ fn number(at: impl Fn() -> Location, node: &roxmltree::Node, attr: &str) -> Resu
     }
 }
 
-/// 1-based line of `node`'s start tag.
-fn line_of(node: &roxmltree::Node) -> u32 {
-    node.document().text_pos_at(node.range().start).row
-}
-
-/// The location of `node` in `file`, described as `element`.
-fn locate(file: &str, node: &roxmltree::Node, element: String) -> Location {
-    Location {
-        file: file.to_string(),
-        line: Some(line_of(node) as usize),
-        element,
-    }
-}
-
 /// An [`SrdfError::Invalid`].
 fn invalid(at: Location, field: &str, problem: &str) -> SrdfError {
     SrdfError::Invalid(InvalidElement {
@@ -226,134 +266,4 @@ fn invalid(at: Location, field: &str, problem: &str) -> SrdfError {
         field: field.to_string(),
         problem: problem.to_string(),
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use proptest::prelude::*;
-
-    /// A TALOS-like SRDF: groups (not read), a group state with a free-flyer and two joints,
-    /// rotor parameters.
-    const SRDF: &str = r#"<?xml version="1.0" ?>
-<robot name="talos">
-    <group name="r_leg">
-        <joint name="leg_right_1_joint" />
-    </group>
-    <!-- <rotor_params><joint name="commented" mass="x"/></rotor_params> -->
-    <group_state name="half_sitting" group="all">
-        <joint name="root_joint" value="0. 0. 1.01927 0. 0. 0. 1." />
-        <joint name="leg_left_4_joint" value="0.6" />
-        <joint name="leg_left_3_joint" value="-4e-1" />
-    </group_state>
-    <rotor_params>
-        <joint name="leg_left_3_joint" mass="1e-5" gear_ratio="100." />
-        <joint name="leg_left_4_joint" mass="2e-5" gear_ratio="50" />
-    </rotor_params>
-</robot>
-"#;
-
-    #[test]
-    fn reads_rotors_and_group_states() {
-        let s = parse_srdf(SRDF, "talos.srdf").unwrap();
-        assert_eq!(s.rotors.len(), 2);
-        let r = &s.rotors[1];
-        assert_eq!(
-            (r.joint.as_str(), r.inertia, r.gear_ratio, r.line),
-            ("leg_left_4_joint", 2e-5, 50.0, 14)
-        );
-        // N^2 J: 50^2 * 2e-5 = 0.05; 100^2 * 1e-5 = 0.1.
-        assert!((r.armature() - 0.05).abs() < 1e-15);
-        assert!((s.rotors[0].armature() - 0.1).abs() < 1e-15);
-        let h = s.state("half_sitting").unwrap();
-        assert_eq!((h.group.as_str(), h.line), ("all", 7));
-        assert_eq!(h.joints[0].1, vec![0.0, 0.0, 1.01927, 0.0, 0.0, 0.0, 1.0]);
-        assert_eq!(h.joints[1], ("leg_left_4_joint".to_string(), vec![0.6]));
-        assert_eq!(h.joints[2].1, vec![-0.4]);
-        assert!(s.state("standing").is_none());
-    }
-
-    #[test]
-    fn bad_entries_are_errors_at_their_line() {
-        let cases = [
-            (
-                "mass=\"2e-5\"",
-                "mass=\"-1\"",
-                ":14: rotor_params joint \"leg_left_4_joint\": mass",
-            ),
-            (
-                "gear_ratio=\"50\"",
-                "gear_ratio=\"0\"",
-                ":14: rotor_params joint \"leg_left_4_joint\": gear_ratio: must be > 0",
-            ),
-            (
-                "gear_ratio=\"50\"",
-                "",
-                ":14: rotor_params joint \"leg_left_4_joint\": gear_ratio: missing",
-            ),
-            (
-                "mass=\"2e-5\"",
-                "mass=\"heavy\"",
-                ":14: rotor_params joint \"leg_left_4_joint\": mass: \"heavy\"",
-            ),
-            (
-                "value=\"0.6\"",
-                "value=\"0.6 x\"",
-                ":9: group_state \"half_sitting\" joint \"leg_left_4_joint\": value",
-            ),
-            (
-                "value=\"0.6\"",
-                "value=\"\"",
-                ":9: group_state \"half_sitting\" joint \"leg_left_4_joint\": value",
-            ),
-            (
-                "<group_state name=\"half_sitting\"",
-                "<group_state",
-                ":7: group_state: name: missing",
-            ),
-            (
-                "</robot>",
-                "</robt>",
-                "talos.srdf:16: not a valid SRDF document",
-            ),
-        ];
-        for (from, to, expected) in cases {
-            // Replace the last occurrence so the rotor entries, not the state, are changed.
-            let at = SRDF.rfind(from).unwrap();
-            let text = format!("{}{}{}", &SRDF[..at], to, &SRDF[at + from.len()..]);
-            let e = parse_srdf(&text, "talos.srdf").unwrap_err().to_string();
-            assert!(e.contains(expected), "{from} -> {to}: {e}");
-        }
-        let e = parse_srdf("<urdf/>", "x.srdf").unwrap_err().to_string();
-        assert!(e.contains("x.srdf:1") && e.contains("<robot>"), "{e}");
-        let e = load_srdf_file("/no/such.srdf").unwrap_err().to_string();
-        assert!(e.contains("/no/such.srdf: cannot read SRDF file"), "{e}");
-    }
-
-    proptest! {
-        /// Arbitrary text, and the sample with any one byte range deleted, give a result or
-        /// an error, never a panic; what parses has finite values, inertias >= 0, ratios > 0.
-        #[test]
-        fn never_panics(text in ".{0,200}", cut in 0usize..600, len in 0usize..40) {
-            let start = cut.min(SRDF.len());
-            let end = (start + len).min(SRDF.len());
-            let (start, end) = (floor(SRDF, start), floor(SRDF, end));
-            let damaged = format!("{}{}", &SRDF[..start], &SRDF[end..]);
-            for t in [text.as_str(), damaged.as_str()] {
-                if let Ok(s) = parse_srdf(t, "f.srdf") {
-                    prop_assert!(s.rotors.iter().all(|r| r.inertia >= 0.0 && r.gear_ratio > 0.0));
-                    let values = s.states.iter().flat_map(|g| g.joints.iter().flat_map(|j| &j.1));
-                    prop_assert!(values.clone().all(|x| x.is_finite()));
-                }
-            }
-        }
-    }
-
-    /// The largest char boundary of `s` at or below `i`.
-    fn floor(s: &str, mut i: usize) -> usize {
-        while !s.is_char_boundary(i) {
-            i -= 1;
-        }
-        i
-    }
 }

@@ -1,51 +1,13 @@
-//! Conversion of a parsed URDF tree into bodies: topology checks, fixed-joint merging.
+//! Conversion of a parsed URDF tree into bodies: fixed-joint merging, joint models, inertias.
 
-use super::error::{InvalidElement, Location, UrdfError};
+use super::error::{Location, UrdfError};
 use super::joints::joint_props;
-use super::locate::element_line;
+use super::source::Source;
+use super::topology::topology;
 use super::{LinkFrame, UrdfModel, UrdfOptions};
 use crate::{BodyId, BodySpec, JointModel, ModelBuilder, RigidInertia};
 use nalgebra::{Isometry3, Matrix3, Translation3, Unit, UnitQuaternion, Vector3};
-use std::collections::HashMap;
 use urdf_rs::{JointType, Robot};
-
-/// The URDF text and its label, for locating elements in error messages.
-pub(super) struct Source<'a> {
-    /// Raw XML text.
-    pub xml: &'a str,
-    /// File name or label.
-    pub file: &'a str,
-}
-
-impl Source<'_> {
-    /// Location of the element `<tag name="name">`.
-    pub(super) fn at(&self, tag: &str, name: &str) -> Location {
-        Location {
-            file: self.file.to_string(),
-            line: element_line(self.xml, tag, name),
-            element: format!("{tag} {name:?}"),
-        }
-    }
-
-    /// An [`UrdfError::Invalid`] at `<tag name="name">`.
-    pub(super) fn invalid(&self, tag: &str, name: &str, field: &str, problem: String) -> UrdfError {
-        UrdfError::Invalid(InvalidElement {
-            at: self.at(tag, name),
-            field: field.to_string(),
-            problem,
-        })
-    }
-}
-
-/// Parent/child relations of the URDF links, indexed by link.
-struct Topology {
-    /// Root link.
-    root: usize,
-    /// Joints whose parent is the link, in file order.
-    children: Vec<Vec<usize>>,
-    /// Link index of every joint's child.
-    child_of_joint: Vec<usize>,
-}
 
 /// Where a link's frame is: owning body (`None` = world) and pose in that body.
 #[derive(Clone, Copy)]
@@ -88,7 +50,7 @@ pub(super) fn convert(
         let joint = &robot.joints[j];
         let child = topo.child_of_joint[j];
         check_mimic(joint, src, options, &mut warnings)?;
-        let parent = frames[link_index(robot, &joint.parent.link)].expect("parent visited first");
+        let parent = frames[topo.parent_of_joint[j]].expect("parent visited first");
         let placement = parent.pose
             * pose(&joint.origin, || {
                 src.invalid(
@@ -197,119 +159,6 @@ fn root_spec(
         placement: Isometry3::identity(),
         inertia: link_inertia(link, src, warnings)?,
     })
-}
-
-/// Index of a link known to exist (checked by [`topology`]).
-fn link_index(robot: &Robot, name: &str) -> usize {
-    robot
-        .links
-        .iter()
-        .position(|l| l.name == name)
-        .expect("checked by topology")
-}
-
-/// Checks names and connectivity and finds the unique root link.
-fn topology(robot: &Robot, src: &Source<'_>) -> Result<Topology, UrdfError> {
-    if robot.links.is_empty() {
-        return Err(src.invalid("robot", &robot.name, "link", "no links".into()));
-    }
-    let mut index: HashMap<&str, usize> = HashMap::new();
-    for (i, link) in robot.links.iter().enumerate() {
-        if index.insert(link.name.as_str(), i).is_some() {
-            return Err(src.invalid("link", &link.name, "name", "duplicate link name".into()));
-        }
-    }
-    let mut joint_names: HashMap<&str, usize> = HashMap::new();
-    let mut parent_joint: Vec<Option<usize>> = vec![None; robot.links.len()];
-    let mut children = vec![Vec::new(); robot.links.len()];
-    let mut child_of_joint = Vec::with_capacity(robot.joints.len());
-    for (j, joint) in robot.joints.iter().enumerate() {
-        if joint_names.insert(joint.name.as_str(), j).is_some() {
-            return Err(src.invalid("joint", &joint.name, "name", "duplicate joint name".into()));
-        }
-        let find = |field: &str, link: &str| {
-            index.get(link).copied().ok_or_else(|| {
-                src.invalid(
-                    "joint",
-                    &joint.name,
-                    field,
-                    format!("no link named {link:?}"),
-                )
-            })
-        };
-        let parent = find("parent link", &joint.parent.link)?;
-        let child = find("child link", &joint.child.link)?;
-        if let Some(other) = parent_joint[child] {
-            let problem = format!(
-                "link {:?} is already the child of joint {:?}",
-                joint.child.link, robot.joints[other].name
-            );
-            return Err(src.invalid("joint", &joint.name, "child link", problem));
-        }
-        parent_joint[child] = Some(j);
-        children[parent].push(j);
-        child_of_joint.push(child);
-    }
-    let root = unique_root(robot, &parent_joint, src)?;
-    check_connected(robot, root, &children, &child_of_joint, src)?;
-    Ok(Topology {
-        root,
-        children,
-        child_of_joint,
-    })
-}
-
-/// The single link without a parent joint.
-fn unique_root(
-    robot: &Robot,
-    parent_joint: &[Option<usize>],
-    src: &Source<'_>,
-) -> Result<usize, UrdfError> {
-    let roots: Vec<usize> = (0..robot.links.len())
-        .filter(|&l| parent_joint[l].is_none())
-        .collect();
-    match roots.as_slice() {
-        [root] => Ok(*root),
-        [] => Err(src.invalid(
-            "robot",
-            &robot.name,
-            "joint",
-            "no root link: the joints form a cycle".into(),
-        )),
-        many => {
-            let names: Vec<&str> = many.iter().map(|&l| robot.links[l].name.as_str()).collect();
-            let problem = format!(
-                "several root links ({}): the tree is not connected",
-                names.join(", ")
-            );
-            Err(src.invalid("robot", &robot.name, "link", problem))
-        }
-    }
-}
-
-/// Every link must be reachable from the root (otherwise part of the joints form a cycle).
-fn check_connected(
-    robot: &Robot,
-    root: usize,
-    children: &[Vec<usize>],
-    child_of_joint: &[usize],
-    src: &Source<'_>,
-) -> Result<(), UrdfError> {
-    let mut seen = vec![false; robot.links.len()];
-    let mut stack = vec![root];
-    while let Some(l) = stack.pop() {
-        seen[l] = true;
-        stack.extend(children[l].iter().map(|&j| child_of_joint[j]));
-    }
-    match seen.iter().position(|s| !s) {
-        None => Ok(()),
-        Some(l) => Err(src.invalid(
-            "link",
-            &robot.links[l].name,
-            "parent",
-            "not reachable from the root link: its joints form a cycle".into(),
-        )),
-    }
 }
 
 /// The joint model of a URDF joint (`None` for `fixed`, which is merged).

@@ -1,7 +1,7 @@
 //! Semantic checks and construction of a [`CollisionModel`] from a parsed file.
 
 use super::error::{FormatError, FormatErrorKind, Locator};
-use super::raw::{RawFile, RawPose, RawSegment, RawSsv};
+use super::raw::{Point, RawFile, RawPose, RawSegment, RawSsv};
 use super::LoadedModel;
 use crate::model::CollisionModel;
 use crate::primitives::{Lss, Pss, Ssv, Tss};
@@ -24,7 +24,7 @@ pub(super) fn build(raw: RawFile, loc: &Locator) -> Res<LoadedModel> {
         add_segment(&mut model, seg, k, loc)?;
     }
     for (k, pair) in raw.pairs.iter().enumerate() {
-        let [a, b] = pair.get_ref();
+        let [a, b] = &pair.get_ref().0;
         add_pair(&mut model, a, b, &format!("pairs[{k}]"), loc)?;
     }
     for (k, pair) in raw.pair.iter().enumerate() {
@@ -223,7 +223,7 @@ fn build_ssvs(list: &[Spanned<RawSsv>], field: &str, loc: &Locator) -> Res<Vec<S
 fn build_ssv(entry: &Spanned<RawSsv>, field: &str, loc: &Locator) -> Res<Ssv> {
     let raw = entry.get_ref();
     let r = *raw.radius.get_ref();
-    let p = |a: &[f64; 3]| Point3::from(*a);
+    let p = |a: &Point| Point3::from(a.0);
     let (result, key, span) = match (&raw.point, &raw.line, &raw.triangle) {
         (Some(v), None, None) => (
             Pss::new(p(v.get_ref()), r).map(Ssv::from),
@@ -231,11 +231,11 @@ fn build_ssv(entry: &Spanned<RawSsv>, field: &str, loc: &Locator) -> Res<Ssv> {
             v.span(),
         ),
         (None, Some(v), None) => {
-            let [a, b] = v.get_ref();
+            let [a, b] = &v.get_ref().0;
             (Lss::new(p(a), p(b), r).map(Ssv::from), "line", v.span())
         }
         (None, None, Some(v)) => {
-            let [a, b, c] = v.get_ref();
+            let [a, b, c] = &v.get_ref().0;
             (
                 Tss::new(p(a), p(b), p(c), r).map(Ssv::from),
                 "triangle",
@@ -311,14 +311,14 @@ fn build_pose(
 }
 
 fn body_pose(raw: &RawPose, field: &str, loc: &Locator) -> Res<Isometry3<f64>> {
-    let check = |v: &Spanned<[f64; 3]>, key: &str| -> Res<[f64; 3]> {
-        match v.get_ref().iter().find(|x| !x.is_finite()) {
+    let check = |v: &Spanned<Point>, key: &str| -> Res<[f64; 3]> {
+        match v.get_ref().0.iter().find(|x| !x.is_finite()) {
             Some(&x) => Err(loc.at(
                 v.span(),
                 format!("{field}.{key}"),
                 FormatErrorKind::NonFinitePose(x),
             )),
-            None => Ok(*v.get_ref()),
+            None => Ok(v.get_ref().0),
         }
     };
     let [x, y, z] = check(&raw.position, "position")?;

@@ -84,6 +84,7 @@
 
 mod build;
 mod error;
+mod exact;
 mod raw;
 mod write;
 

@@ -1,9 +1,13 @@
 //! The serde image of a model file: every value that semantic checks may reject keeps its
 //! byte span (`toml::Spanned`) so errors can name the line.
 
+use super::exact::Exact;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use toml::Spanned;
+
+/// Three coordinates (a point, a position or roll-pitch-yaw angles).
+pub(super) type Point = Exact<f64, 3>;
 
 /// A whole model file.
 #[derive(Debug, Deserialize, Serialize)]
@@ -12,7 +16,7 @@ pub(super) struct RawFile {
     pub activation_distance: Spanned<f64>,
     pub bodies: Vec<Spanned<String>>,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub pairs: Vec<Spanned<[Spanned<String>; 2]>>,
+    pub pairs: Vec<Spanned<Exact<Spanned<String>, 2>>>,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub pair: Vec<Spanned<RawPair>>,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
@@ -52,11 +56,11 @@ pub(super) struct RawSegment {
 #[serde(deny_unknown_fields)]
 pub(super) struct RawSsv {
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub point: Option<Spanned<[f64; 3]>>,
+    pub point: Option<Spanned<Point>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub line: Option<Spanned<[[f64; 3]; 2]>>,
+    pub line: Option<Spanned<Exact<Point, 2>>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub triangle: Option<Spanned<[[f64; 3]; 3]>>,
+    pub triangle: Option<Spanned<Exact<Point, 3>>>,
     pub radius: Spanned<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mirror_copy: Option<Spanned<String>>,
@@ -66,7 +70,7 @@ pub(super) struct RawSsv {
 #[derive(Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawPose {
-    pub position: Spanned<[f64; 3]>,
+    pub position: Spanned<Point>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub rpy: Option<Spanned<[f64; 3]>>,
+    pub rpy: Option<Spanned<Point>>,
 }

@@ -1,6 +1,7 @@
 //! Writing a model back to TOML (explicit SSVs for every segment).
 
-use super::raw::{RawFile, RawPose, RawSegment, RawSsv};
+use super::exact::Exact;
+use super::raw::{Point, RawFile, RawPose, RawSegment, RawSsv};
 use crate::model::CollisionModel;
 use crate::primitives::Ssv;
 use nalgebra::{Isometry3, Point3};
@@ -11,8 +12,8 @@ fn sp<T>(value: T) -> Spanned<T> {
     Spanned::new(0..0, value)
 }
 
-fn arr(p: &Point3<f64>) -> [f64; 3] {
-    [p.x, p.y, p.z]
+fn arr(p: &Point3<f64>) -> Point {
+    Exact([p.x, p.y, p.z])
 }
 
 fn raw_ssv(ssv: &Ssv) -> RawSsv {
@@ -26,8 +27,8 @@ fn raw_ssv(ssv: &Ssv) -> RawSsv {
     };
     match ssv {
         Ssv::Point(_) => raw.point = Some(sp(arr(&v[0]))),
-        Ssv::Line(_) => raw.line = Some(sp([arr(&v[0]), arr(&v[1])])),
-        Ssv::Triangle(_) => raw.triangle = Some(sp([arr(&v[0]), arr(&v[1]), arr(&v[2])])),
+        Ssv::Line(_) => raw.line = Some(sp(Exact([arr(&v[0]), arr(&v[1])]))),
+        Ssv::Triangle(_) => raw.triangle = Some(sp(Exact([arr(&v[0]), arr(&v[1]), arr(&v[2])]))),
     }
     raw
 }
@@ -36,8 +37,8 @@ fn raw_pose(pose: &Isometry3<f64>) -> RawPose {
     let t = pose.translation.vector;
     let (roll, pitch, yaw) = pose.rotation.euler_angles();
     RawPose {
-        position: sp([t.x, t.y, t.z]),
-        rpy: Some(sp([roll, pitch, yaw])),
+        position: sp(Exact([t.x, t.y, t.z])),
+        rpy: Some(sp(Exact([roll, pitch, yaw]))),
     }
 }
 
@@ -67,7 +68,7 @@ pub(super) fn raw_file(
     let pairs = model
         .pairs()
         .iter()
-        .map(|p| sp([name(p.a), name(p.b)]))
+        .map(|p| sp(Exact([name(p.a), name(p.b)])))
         .collect();
     let pose = poses
         .iter()
