@@ -13,13 +13,17 @@ use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, RigidInertia, Spat
 use crate::subsystem::axial::{axial_members, carriers, AxialKind, AxialMember, Carried};
 use crate::subsystem::link::{link_rotor_subsystems, LinkRotors};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
-use crate::Model;
+use crate::{DynamicsError, Model};
 use nalgebra::{
     DMatrix, DVector, Isometry3, Matrix3, Matrix6, Rotation3, Translation3, UnitQuaternion,
     Vector3, Vector6,
 };
 
-/// Mutable workspace for one model; all vectors are sized once in [`Data::new`].
+/// Mutable workspace for one model. Its memory is linear in the model size: the vectors are
+/// sized once in [`Data::new`], the dense `nv x nv` matrices of the O(n^3) methods there too
+/// for `nv <= EAGER_DENSE_MAX_NV` (256: at most 1 MiB, so robot-sized models allocate nothing
+/// after `Data::new`), for larger models by the first call that needs them
+/// ([`crate::mass_matrix`], CRBA or sparse forward dynamics), and kept.
 ///
 /// Kinematic results are public: after any kinematics or dynamics call, `x[i]` is `C_i` (2.36),
 /// `world_rot[i]` / `world_pos[i]` the pose of body `i` in the world, `vel[i]` its velocity
@@ -144,12 +148,32 @@ pub struct Data {
     pub ddq: DVector<f64>,
     /// Generalized forces (output of inverse dynamics).
     pub tau: DVector<f64>,
-    /// Joint-space mass matrix (output of [`crate::mass_matrix`]).
+    /// Joint-space mass matrix (output of [`crate::mass_matrix`]); for `nv > 256` empty (0 x 0)
+    /// until a call that computes it.
     pub mass: DMatrix<f64>,
     /// Velocity/gravity/external-force bias `RNEA(q, v, 0)` used by the O(n^3) methods.
     pub nle: DVector<f64>,
-    /// Factorisation workspace (dense Cholesky or sparse LTL).
+    /// Factorisation workspace (dense Cholesky or sparse LTL); sized like `mass`.
     pub(crate) factor: DMatrix<f64>,
+}
+
+/// Largest `nv` whose dense workspaces [`Data::new`] allocates up front (2 x 256^2 x 8 bytes
+/// = 1 MiB); larger models get them on first use, so the O(n) algorithms need O(n) memory.
+const EAGER_DENSE_MAX_NV: usize = 256;
+
+/// An `n x n` zero matrix, or [`DynamicsError::Allocation`] if the memory is not available
+/// (a fallible reservation: an oversized model is an error, not an abort).
+fn dense_zeros(what: &'static str, n: usize) -> Result<DMatrix<f64>, DynamicsError> {
+    let error = || DynamicsError::Allocation {
+        what,
+        rows: n,
+        bytes: (n as u128) * (n as u128) * 8,
+    };
+    let len = n.checked_mul(n).ok_or_else(error)?;
+    let mut entries = Vec::new();
+    entries.try_reserve_exact(len).map_err(|_| error())?;
+    entries.resize(len, 0.0);
+    Ok(DMatrix::from_vec(n, n, entries))
 }
 
 /// [`Data::mbar_init`]: `None` for rigid sub-system members, except the link of a
@@ -266,7 +290,7 @@ impl Data {
         for (i, b) in model.bodies.iter().enumerate() {
             col_offset[i + 1] = col_offset[i] + b.v_set.len();
         }
-        Self {
+        let mut data = Self {
             nq: model.nq(),
             nv,
             x: vec![SpatialTransform::identity(); n],
@@ -318,10 +342,28 @@ impl Data {
             fd_v: DVector::zeros(nv),
             ddq: DVector::zeros(nv),
             tau: DVector::zeros(nv),
-            mass: DMatrix::zeros(nv, nv),
+            mass: DMatrix::zeros(0, 0),
             nle: DVector::zeros(nv),
-            factor: DMatrix::zeros(nv, nv),
+            factor: DMatrix::zeros(0, 0),
+        };
+        if nv <= EAGER_DENSE_MAX_NV {
+            // At most 1 MiB: cannot fail in practice, and if it did the first dense call
+            // would report it.
+            let _ = data.dense_workspace(true);
         }
+        data
+    }
+
+    /// Sizes the dense `nv x nv` workspaces on first use: `mass`, and `factor` if
+    /// `with_factor` (later calls find them sized and allocate nothing).
+    pub(crate) fn dense_workspace(&mut self, with_factor: bool) -> Result<(), DynamicsError> {
+        if self.mass.nrows() != self.nv {
+            self.mass = dense_zeros("mass matrix", self.nv)?;
+        }
+        if with_factor && self.factor.nrows() != self.nv {
+            self.factor = dense_zeros("factorisation workspace", self.nv)?;
+        }
+        Ok(())
     }
 
     /// Number of bodies this workspace was sized for.
@@ -336,5 +378,24 @@ impl Data {
             Translation3::from(self.world_pos[i]),
             UnitQuaternion::from_rotation_matrix(&r),
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A dense matrix beyond the address space (or whose entry count overflows) is a typed
+    /// error, not an abort.
+    #[test]
+    fn oversized_dense_matrix_is_an_error() {
+        for n in [1usize << 28, 1 << 33] {
+            match dense_zeros("mass matrix", n) {
+                Err(DynamicsError::Allocation { rows, bytes, .. }) => {
+                    assert_eq!((rows, bytes), (n, (n as u128).pow(2) * 8));
+                }
+                other => panic!("n = {n}: {other:?}"),
+            }
+        }
     }
 }
