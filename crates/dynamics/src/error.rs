@@ -151,14 +151,15 @@ pub enum DynamicsError {
         tolerance: f64,
     },
     /// The workspace for a dense result could not be allocated (the model is too large).
-    #[error("cannot allocate the {rows} x {rows} {what} ({bytes} bytes): model too large for a dense matrix")]
+    #[error(
+        "cannot allocate the {rows} x {rows} {what} ({:.3e} bytes): model too large for a dense matrix",
+        (*.rows as f64).powi(2) * 8.0
+    )]
     Allocation {
         /// Which workspace.
         what: &'static str,
-        /// Its number of rows (and columns).
+        /// Its number of rows (and columns), of 8 bytes each.
         rows: usize,
-        /// Bytes requested.
-        bytes: u128,
     },
     /// A (projected) mass matrix is not positive definite, e.g. at a singular Euler angle.
     #[error("mass matrix not positive definite (pivot {pivot} at coordinate {index})")]
