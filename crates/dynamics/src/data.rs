@@ -13,7 +13,9 @@ use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, RigidInertia, Spat
 use crate::subsystem::axial::{axial_members, carriers, AxialKind, AxialMember, Carried};
 use crate::subsystem::link::{link_rotor_subsystems, LinkRotors};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
-use crate::{DynamicsError, Model};
+use crate::Model;
+
+mod dense;
 use nalgebra::{
     DMatrix, DVector, Isometry3, Matrix3, Matrix6, Rotation3, Translation3, UnitQuaternion,
     Vector3, Vector6,
@@ -155,21 +157,6 @@ pub struct Data {
     pub nle: DVector<f64>,
     /// Factorisation workspace (dense Cholesky or sparse LTL); sized like `mass`.
     pub(crate) factor: DMatrix<f64>,
-}
-
-/// Largest `nv` whose dense workspaces [`Data::new`] allocates up front (2 x 256^2 x 8 bytes
-/// = 1 MiB); larger models get them on first use, so the O(n) algorithms need O(n) memory.
-const EAGER_DENSE_MAX_NV: usize = 256;
-
-/// An `n x n` zero matrix, or [`DynamicsError::Allocation`] if the memory is not available
-/// (a fallible reservation: an oversized model is an error, not an abort).
-fn dense_zeros(what: &'static str, n: usize) -> Result<DMatrix<f64>, DynamicsError> {
-    let error = || DynamicsError::Allocation { what, rows: n };
-    let len = n.checked_mul(n).ok_or_else(error)?;
-    let mut entries = Vec::new();
-    entries.try_reserve_exact(len).map_err(|_| error())?;
-    entries.resize(len, 0.0);
-    Ok(DMatrix::from_vec(n, n, entries))
 }
 
 /// [`Data::mbar_init`]: `None` for rigid sub-system members, except the link of a
@@ -342,24 +329,8 @@ impl Data {
             nle: DVector::zeros(nv),
             factor: DMatrix::zeros(0, 0),
         };
-        if nv <= EAGER_DENSE_MAX_NV {
-            // At most 1 MiB: cannot fail in practice, and if it did the first dense call
-            // would report it.
-            let _ = data.dense_workspace(true);
-        }
+        data.dense_workspace_up_front();
         data
-    }
-
-    /// Sizes the dense `nv x nv` workspaces on first use: `mass`, and `factor` if
-    /// `with_factor` (later calls find them sized and allocate nothing).
-    pub(crate) fn dense_workspace(&mut self, with_factor: bool) -> Result<(), DynamicsError> {
-        if self.mass.nrows() != self.nv {
-            self.mass = dense_zeros("mass matrix", self.nv)?;
-        }
-        if with_factor && self.factor.nrows() != self.nv {
-            self.factor = dense_zeros("factorisation workspace", self.nv)?;
-        }
-        Ok(())
     }
 
     /// Number of bodies this workspace was sized for.
@@ -374,26 +345,5 @@ impl Data {
             Translation3::from(self.world_pos[i]),
             UnitQuaternion::from_rotation_matrix(&r),
         )
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A dense matrix beyond the address space (or whose entry count overflows) is a typed
-    /// error, not an abort.
-    #[test]
-    fn oversized_dense_matrix_is_an_error() {
-        for n in [1usize << 28, 1 << 33] {
-            match dense_zeros("mass matrix", n) {
-                Err(e @ DynamicsError::Allocation { rows, .. }) => {
-                    assert_eq!(rows, n);
-                    let bytes = format!("({:.3e} bytes)", (n as f64).powi(2) * 8.0);
-                    assert!(e.to_string().contains(&bytes), "{e}");
-                }
-                other => panic!("n = {n}: {other:?}"),
-            }
-        }
     }
 }
