@@ -1,8 +1,9 @@
 //! Input validation shared by the public entry points (errors, never panics).
 
+use crate::configuration::QUATERNION_NORM_TOLERANCE;
 use crate::model::joint::Joint;
 use crate::spatial::Wrench;
-use crate::{Data, DynamicsError, Model};
+use crate::{Body, Data, DynamicsError, Model};
 use nalgebra::{DVector, Vector3};
 
 /// The workspace must have been built for this model.
@@ -88,20 +89,52 @@ pub(crate) fn positive_pivot(index: usize, d: f64) -> Result<(), DynamicsError> 
     Err(DynamicsError::NotPositiveDefinite { index, pivot: d })
 }
 
-/// Length and finiteness of `q`, and non-zero free-joint quaternions.
+/// Squared-norm bounds `(1 -+ tol)^2` of an accepted free-joint quaternion.
+const QUAT_NORM2_MIN: f64 = (1.0 - QUATERNION_NORM_TOLERANCE) * (1.0 - QUATERNION_NORM_TOLERANCE);
+/// See [`QUAT_NORM2_MIN`].
+const QUAT_NORM2_MAX: f64 = (1.0 + QUATERNION_NORM_TOLERANCE) * (1.0 + QUATERNION_NORM_TOLERANCE);
+
+/// Length and finiteness of `q`, and free-joint quaternions of norm within
+/// [`QUATERNION_NORM_TOLERANCE`] of 1. A squared norm in range cannot have overflowed or
+/// underflowed (its entries are finite and at most ~1), so one comparison settles the valid case.
 pub(crate) fn configuration(model: &Model, q: &DVector<f64>) -> Result<(), DynamicsError> {
     vector("q", q, model.nq())?;
     for b in &model.bodies {
         if matches!(b.joint, Joint::Quaternion) {
             let n2 = q.rows(b.q_index + 3, 4).norm_squared();
-            if n2.is_nan() || n2 <= 1e-24 {
-                return Err(DynamicsError::ZeroQuaternion {
-                    q_index: b.q_index + 3,
-                });
+            if !(QUAT_NORM2_MIN..=QUAT_NORM2_MAX).contains(&n2) {
+                return Err(quaternion_error(b, q));
             }
         }
     }
     Ok(())
+}
+
+/// The error of a free-joint quaternion outside the tolerance, with its norm computed without
+/// overflow or underflow (a norm below 1e-12 is [`DynamicsError::ZeroQuaternion`]).
+#[cold]
+fn quaternion_error(b: &Body, q: &DVector<f64>) -> DynamicsError {
+    let q_index = b.q_index + 3;
+    let norm = scaled_norm(&q.as_slice()[q_index..q_index + 4]);
+    if norm <= 1e-12 {
+        return DynamicsError::ZeroQuaternion { q_index };
+    }
+    DynamicsError::QuaternionNorm {
+        joint: b.joint_name.clone(),
+        q_index,
+        norm,
+        tolerance: QUATERNION_NORM_TOLERANCE,
+    }
+}
+
+/// Euclidean norm of finite entries without overflow or underflow: the entries are divided by
+/// the largest magnitude before squaring, the sum of squares is then in `[1, len]`.
+pub(crate) fn scaled_norm(xs: &[f64]) -> f64 {
+    let m = xs.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if m == 0.0 || !m.is_finite() {
+        return m;
+    }
+    m * xs.iter().map(|x| (x / m) * (x / m)).sum::<f64>().sqrt()
 }
 
 /// One finite wrench per body.

@@ -7,6 +7,15 @@ use crate::spatial::skew;
 use crate::{DynamicsError, Model};
 use nalgebra::{DVector, Matrix3, Quaternion, UnitQuaternion, Vector3};
 
+/// Largest accepted deviation of a free-joint quaternion's norm from 1: every function taking a
+/// `q` rejects a quaternion outside `[1 - tol, 1 + tol]` with
+/// [`DynamicsError::QuaternionNorm`] (or [`DynamicsError::ZeroQuaternion`]) and uses the
+/// normalised quaternion inside. The margin admits the drift of explicit integrator stages,
+/// which leave the unit sphere by about `(h |omega|)^2 / 8` (below 1 % for steps that turn the
+/// body by less than 0.28 rad); an unnormalised or mistyped quaternion (`[0, 0, 0, 2]`, or
+/// components of 1e155 whose squares overflow) is an error, never silently rescaled.
+pub const QUATERNION_NORM_TOLERANCE: f64 = 1e-2;
+
 /// `q (+) v dt`: vector joints add `v dt`; quaternion free joints move with the constant body
 /// twist `v` for time `dt` (SE(3) exponential), result quaternion normalised.
 pub fn integrate(

@@ -14,12 +14,18 @@ use crate::subsystem::axial::{axial_members, carriers, AxialKind, AxialMember, C
 use crate::subsystem::link::{link_rotor_subsystems, LinkRotors};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
 use crate::Model;
+
+mod dense;
 use nalgebra::{
     DMatrix, DVector, Isometry3, Matrix3, Matrix6, Rotation3, Translation3, UnitQuaternion,
     Vector3, Vector6,
 };
 
-/// Mutable workspace for one model; all vectors are sized once in [`Data::new`].
+/// Mutable workspace for one model. Its memory is linear in the model size: the vectors are
+/// sized once in [`Data::new`], the dense `nv x nv` matrices of the O(n^3) methods there too
+/// for `nv <= EAGER_DENSE_MAX_NV` (256: at most 1 MiB, so robot-sized models allocate nothing
+/// after `Data::new`), for larger models by the first call that needs them
+/// ([`crate::mass_matrix`], CRBA or sparse forward dynamics), and kept.
 ///
 /// Kinematic results are public: after any kinematics or dynamics call, `x[i]` is `C_i` (2.36),
 /// `world_rot[i]` / `world_pos[i]` the pose of body `i` in the world, `vel[i]` its velocity
@@ -173,11 +179,12 @@ pub struct Data {
     pub ddq: DVector<f64>,
     /// Generalized forces (output of inverse dynamics).
     pub tau: DVector<f64>,
-    /// Joint-space mass matrix (output of [`crate::mass_matrix`]).
+    /// Joint-space mass matrix (output of [`crate::mass_matrix`]); for `nv > 256` empty (0 x 0)
+    /// until a call that computes it.
     pub mass: DMatrix<f64>,
     /// Velocity/gravity/external-force bias `RNEA(q, v, 0)` used by the O(n^3) methods.
     pub nle: DVector<f64>,
-    /// Factorisation workspace (dense Cholesky or sparse LTL).
+    /// Factorisation workspace (dense Cholesky or sparse LTL); sized like `mass`.
     pub(crate) factor: DMatrix<f64>,
 }
 
@@ -295,7 +302,7 @@ impl Data {
         for (i, b) in model.bodies.iter().enumerate() {
             col_offset[i + 1] = col_offset[i] + b.v_set.len();
         }
-        Self {
+        let mut data = Self {
             nq: model.nq(),
             nv,
             x: vec![SpatialTransform::identity(); n],
@@ -347,10 +354,12 @@ impl Data {
             fd_v: DVector::zeros(nv),
             ddq: DVector::zeros(nv),
             tau: DVector::zeros(nv),
-            mass: DMatrix::zeros(nv, nv),
+            mass: DMatrix::zeros(0, 0),
             nle: DVector::zeros(nv),
-            factor: DMatrix::zeros(nv, nv),
-        }
+            factor: DMatrix::zeros(0, 0),
+        };
+        data.dense_workspace_up_front();
+        data
     }
 
     /// Number of bodies this workspace was sized for.

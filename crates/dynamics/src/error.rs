@@ -137,6 +137,30 @@ pub enum DynamicsError {
         /// Index of the quaternion's first component in `q`.
         q_index: usize,
     },
+    /// A free-joint quaternion in `q` has a norm farther from 1 than
+    /// [`crate::configuration::QUATERNION_NORM_TOLERANCE`] (it is normalised only within it).
+    #[error("joint `{joint}`: quaternion at q[{q_index}..] has norm {norm:e}, more than {tolerance} from 1 (pass a unit quaternion)")]
+    QuaternionNorm {
+        /// Name of the free joint.
+        joint: String,
+        /// Index of the quaternion's first component in `q`.
+        q_index: usize,
+        /// Its Euclidean norm (computed without overflow).
+        norm: f64,
+        /// The accepted deviation of the norm from 1.
+        tolerance: f64,
+    },
+    /// The workspace for a dense result could not be allocated (the model is too large).
+    #[error(
+        "cannot allocate the {rows} x {rows} {what} ({:.3e} bytes): model too large for a dense matrix",
+        (*.rows as f64).powi(2) * 8.0
+    )]
+    Allocation {
+        /// Which workspace.
+        what: &'static str,
+        /// Its number of rows (and columns), of 8 bytes each.
+        rows: usize,
+    },
     /// A (projected) mass matrix is not positive definite, e.g. at a singular Euler angle.
     #[error("mass matrix not positive definite (pivot {pivot} at coordinate {index})")]
     NotPositiveDefinite {

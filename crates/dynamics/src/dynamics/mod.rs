@@ -177,6 +177,7 @@ pub fn forward_dynamics_solve<'d>(
         return Ok(ddq);
     }
     complete_rotor_kinematics(model, data);
+    data.dense_workspace(true)?;
     body_forces(model, data, fext);
     rnea::rnea_from_kinematics(model, data, None, true);
     crba::crba(model, data);
@@ -234,6 +235,7 @@ pub fn mass_matrix<'d>(
         body_kinematics(model, data, i, q, None);
     }
     take_fault(data)?;
+    data.dense_workspace(false)?;
     crba::crba(model, data);
     check::result("mass matrix", data.mass.as_slice())?;
     Ok(&data.mass)

@@ -20,6 +20,12 @@ pub enum CalibrationError {
     /// A non-finite number in the input.
     #[error("non-finite value in {0}")]
     NonFinite(String),
+    /// A joint is listed twice among the calibrated joints.
+    #[error("joint `{0}` is listed twice among the calibrated joints")]
+    DuplicateJoint(String),
+    /// A solver result is infinite or NaN (finite inputs too large for `f64`).
+    #[error("calibration result `{0}` is not finite (inputs too large?)")]
+    NonFiniteResult(&'static str),
     /// The stacked Jacobian is rank deficient: these joints' offsets cannot be identified.
     #[error("unobservable offsets (rank {rank} of {unknowns}): {}", joints.join(", "))]
     Unobservable {

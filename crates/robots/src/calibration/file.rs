@@ -1,136 +1,16 @@
-//! The calibration file (JSON, serde): model, calibrated joints, jig constraints, measured
-//! poses; see the module documentation of [`super`] for the format.
+//! The calibration file (JSON, [`super::spec`]): reading, the checks of its values, and the
+//! calibration problem it describes; see the module documentation of [`super`] for the format.
 
 use super::jig::{BodyFrame, Components, JigConstraint};
+use super::limits;
+use super::locate::{array_element, key_before, line_of, offset_of};
 use super::problem::{CalibratedJoint, CalibrationProblem, JigPose};
+use super::spec::{
+    CalibrationFile, ComponentsSpec, ConstraintSpec, FrameSpec, PoseEntry, PoseSpec,
+};
 use super::CalibrationError;
 use biped_dynamics::urdf::{self, UrdfModel, UrdfOptions};
-use nalgebra::{Isometry3, Translation3, UnitQuaternion};
-use serde::Deserialize;
-use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
-
-/// Model section: a URDF path (relative to the calibration file) and the floating-base flag.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ModelSpec {
-    /// URDF file.
-    pub urdf: PathBuf,
-    /// Give the root a free joint.
-    #[serde(default)]
-    pub floating: bool,
-}
-
-/// A pose `xyz` \[m] + `rpy` \[rad] (`R = Rz(yaw) Ry(pitch) Rx(roll)`, as in URDF).
-#[derive(Debug, Clone, Copy, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct PoseSpec {
-    /// Translation.
-    #[serde(default)]
-    pub xyz: [f64; 3],
-    /// Roll, pitch, yaw.
-    #[serde(default)]
-    pub rpy: [f64; 3],
-}
-
-impl PoseSpec {
-    /// As an isometry.
-    pub fn isometry(&self) -> Isometry3<f64> {
-        let [r, p, y] = self.rpy;
-        Isometry3::from_parts(
-            Translation3::new(self.xyz[0], self.xyz[1], self.xyz[2]),
-            UnitQuaternion::from_euler_angles(r, p, y),
-        )
-    }
-
-    /// True if all numbers are finite.
-    fn finite(&self) -> bool {
-        self.xyz
-            .iter()
-            .chain(self.rpy.iter())
-            .all(|x| x.is_finite())
-    }
-}
-
-/// A frame: URDF link plus an optional offset pose in the link frame.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct FrameSpec {
-    /// URDF link name.
-    pub link: String,
-    /// Offset in the link frame.
-    #[serde(default)]
-    pub xyz: [f64; 3],
-    /// Offset rotation (roll, pitch, yaw).
-    #[serde(default)]
-    pub rpy: [f64; 3],
-}
-
-/// A jig constraint between two frames.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ConstraintSpec {
-    /// Unique name, referenced by the poses' `targets`.
-    pub name: String,
-    /// Reference frame.
-    pub frame_a: FrameSpec,
-    /// Constrained frame.
-    pub frame_b: FrameSpec,
-    /// `"pose"` (default) or `"position"`.
-    #[serde(default)]
-    pub components: ComponentsSpec,
-    /// Weight of the position rows \[1/m] (default 1).
-    #[serde(default = "one")]
-    pub position_weight: f64,
-    /// Weight of the orientation rows \[1/rad] (default 1).
-    #[serde(default = "one")]
-    pub orientation_weight: f64,
-}
-
-/// Serde form of [`Components`].
-#[derive(Debug, Clone, Copy, Default, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum ComponentsSpec {
-    /// Position and orientation.
-    #[default]
-    Pose,
-    /// Position only.
-    Position,
-}
-
-/// One measured jig pose.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct PoseEntry {
-    /// Name.
-    pub name: String,
-    /// Encoder angle per joint \[rad or m]; unlisted joints keep the neutral value.
-    pub encoders: BTreeMap<String, f64>,
-    /// Target pose of `frame_b` in `frame_a` per active constraint name.
-    pub targets: BTreeMap<String, PoseSpec>,
-}
-
-/// A whole calibration file.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct CalibrationFile {
-    /// The model.
-    pub model: ModelSpec,
-    /// Joints whose offsets are estimated.
-    pub joints: Vec<String>,
-    /// Jig constraints.
-    pub constraints: Vec<ConstraintSpec>,
-    /// Measured poses.
-    pub poses: Vec<PoseEntry>,
-    /// Optional known offsets (synthetic data), compared against the estimate.
-    #[serde(default)]
-    pub reference_offsets: BTreeMap<String, f64>,
-}
-
-/// Default weight.
-fn one() -> f64 {
-    1.0
-}
+use std::path::Path;
 
 /// A parsed file with its source text (for error locations).
 pub struct LoadedFile {
@@ -140,99 +20,6 @@ pub struct LoadedFile {
     pub text: String,
     /// Parsed content.
     pub spec: CalibrationFile,
-}
-
-/// 1-based line and column -> byte offset.
-fn offset_of(text: &str, line: usize, column: usize) -> usize {
-    let start: usize = text
-        .split_inclusive('\n')
-        .take(line.saturating_sub(1))
-        .map(str::len)
-        .sum();
-    (start + column.saturating_sub(1)).min(text.len())
-}
-
-/// The last JSON object key (`"key":`) that starts before byte `offset`, if it is a field
-/// name of the format (letters, digits, `_`; a damaged file can put the quotes elsewhere).
-fn key_before(text: &str, offset: usize) -> Option<String> {
-    quoted_before(text, offset)
-        .filter(|k| !k.is_empty() && k.chars().all(|c| c.is_ascii_alphanumeric() || c == '_'))
-}
-
-/// The text between the last pair of quotes followed by `:` before byte `offset`.
-fn quoted_before(text: &str, offset: usize) -> Option<String> {
-    let head = &text[..offset.min(text.len())];
-    let bytes = head.as_bytes();
-    let mut i = head.len();
-    while i > 0 {
-        i -= 1;
-        if bytes[i] != b':' {
-            continue;
-        }
-        let before = head[..i].trim_end();
-        if let Some(stripped) = before.strip_suffix('"') {
-            if let Some(q) = stripped.rfind('"') {
-                return Some(stripped[q + 1..].to_string());
-            }
-        }
-    }
-    None
-}
-
-/// 1-based line of the first occurrence of `"needle"` in `text` at or after byte `from`,
-/// else of the first occurrence anywhere (0 if absent).
-fn line_of(text: &str, needle: &str, from: usize) -> usize {
-    let quoted = format!("\"{needle}\"");
-    let from = from.min(text.len());
-    text[from..]
-        .find(&quoted)
-        .map(|p| p + from)
-        .or_else(|| text.find(&quoted))
-        .map(|p| text[..p].matches('\n').count() + 1)
-        .unwrap_or(0)
-}
-
-/// Byte offset of element `index` of the top-level array `"key": [...]` (0 if not found).
-fn array_element(text: &str, key: &str, index: usize) -> usize {
-    let quoted = format!("\"{key}\"");
-    let Some(k) = text.find(&quoted) else {
-        return 0;
-    };
-    let Some(open) = text[k..].find('[').map(|p| p + k) else {
-        return 0;
-    };
-    let (mut depth, mut in_str, mut escaped, mut seen) = (0usize, false, false, 0usize);
-    for (p, ch) in text[open..].char_indices() {
-        if in_str {
-            (escaped, in_str) = match (escaped, ch) {
-                (true, _) => (false, true),
-                (false, '\\') => (true, true),
-                (false, '"') => (false, false),
-                _ => (false, true),
-            };
-            continue;
-        }
-        match ch {
-            '"' => in_str = true,
-            '[' | '{' => {
-                depth += 1;
-                if depth == 2 {
-                    if seen == index {
-                        return open + p;
-                    }
-                    seen += 1;
-                }
-            }
-            ']' | '}' => {
-                depth = depth.saturating_sub(1);
-                if depth == 0 {
-                    return 0;
-                }
-            }
-            _ => {}
-        }
-    }
-    0
 }
 
 impl LoadedFile {
@@ -248,14 +35,24 @@ impl LoadedFile {
         Self::parse(&file, text)
     }
 
-    /// Parses calibration-file text; `file` labels errors.
+    /// Parses calibration-file text (a leading byte-order mark is skipped) and checks its
+    /// values: distinct names, numbers within their physical ranges ([`limits`]); `file`
+    /// labels errors.
     pub fn parse(file: &str, text: String) -> Result<Self, CalibrationError> {
+        let text = match text.strip_prefix('\u{feff}') {
+            Some(rest) => rest.to_string(),
+            None => text,
+        };
         match serde_json::from_str::<CalibrationFile>(&text) {
-            Ok(spec) => Ok(Self {
-                file: file.to_string(),
-                text,
-                spec,
-            }),
+            Ok(spec) => {
+                let loaded = Self {
+                    file: file.to_string(),
+                    text,
+                    spec,
+                };
+                loaded.check_values()?;
+                Ok(loaded)
+            }
             Err(e) => {
                 let msg = e.to_string();
                 let msg = msg.split(" at line ").next().unwrap_or(&msg).to_string();
@@ -277,7 +74,7 @@ impl LoadedFile {
     }
 
     /// A located error about `needle`, searched from byte `from` on (e.g. inside one pose).
-    fn error_after(
+    pub(crate) fn error_after(
         &self,
         from: usize,
         needle: &str,
@@ -315,8 +112,9 @@ impl LoadedFile {
             .iter()
             .enumerate()
             .map(|(i, name)| {
+                let at = array_element(&self.text, "joints", i);
                 CalibratedJoint::find(model, name)
-                    .map_err(|e| self.error(name, format!("joints[{i}]"), e.to_string()))
+                    .map_err(|e| self.error_after(at, name, format!("joints[{i}]"), e.to_string()))
             })
             .collect::<Result<Vec<_>, _>>()?;
         let constraints = s
@@ -356,9 +154,6 @@ impl LoadedFile {
             xyz: f.xyz,
             rpy: f.rpy,
         };
-        if !off.finite() {
-            return Err(self.error_after(at, &f.link, field, "non-finite offset".into()));
-        }
         Ok(BodyFrame {
             body: link.body,
             pose: link.pose * off.isometry(),
@@ -372,24 +167,6 @@ impl LoadedFile {
         i: usize,
         c: &ConstraintSpec,
     ) -> Result<JigConstraint, CalibrationError> {
-        let dup = self
-            .spec
-            .constraints
-            .iter()
-            .filter(|o| o.name == c.name)
-            .count()
-            > 1;
-        let w_ok = [c.position_weight, c.orientation_weight]
-            .iter()
-            .all(|w| w.is_finite() && *w >= 0.0);
-        if dup || !w_ok {
-            let why = if dup {
-                "duplicate constraint name"
-            } else {
-                "weights must be finite and >= 0"
-            };
-            return Err(self.error(&c.name, format!("constraints[{i}]"), why.into()));
-        }
         let at = array_element(&self.text, "constraints", i);
         Ok(JigConstraint {
             name: c.name.clone(),
@@ -414,7 +191,8 @@ impl LoadedFile {
         })
     }
 
-    /// Resolves pose `i`: encoder readings into `q`, targets by constraint name.
+    /// Resolves pose `i`: encoder readings (in range for their joint's kind) into `q`, targets
+    /// by constraint name.
     fn pose(
         &self,
         model: &biped_dynamics::Model,
@@ -429,9 +207,9 @@ impl LoadedFile {
             let field = format!("poses[{i}].encoders.{name}");
             let j = CalibratedJoint::find(model, name)
                 .map_err(|e| err(name, field.clone(), e.to_string()))?;
-            if !value.is_finite() {
-                return Err(err(name, field, "non-finite encoder value".into()));
-            }
+            limits::reading(model, name)
+                .check(*value)
+                .map_err(|m| err(name, field, format!("encoder reading {m}")))?;
             q[j.q_index] = *value;
         }
         let mut targets = Vec::with_capacity(p.targets.len());
@@ -441,9 +219,6 @@ impl LoadedFile {
             let Some(c) = c else {
                 return Err(err(name, field, format!("no constraint named `{name}`")));
             };
-            if !t.finite() {
-                return Err(err(name, field, "non-finite target".into()));
-            }
             targets.push((c, t.isometry()));
         }
         Ok(JigPose {

@@ -12,6 +12,9 @@
 //! an unobservable direction are reported as [`CalibrationError::Unobservable`]. The per-pose
 //! report ([`PoseReport`]) shows what the offsets could not absorb: with a correct model only
 //! noise remains, a geometric error (e.g. a link length) leaves a clearly larger residual.
+//! The solver works with the weights divided by the largest one (the same minimiser; weights of
+//! any magnitude neither overflow nor look unobservable), and a result with an infinite or NaN
+//! number is [`CalibrationError::NonFiniteResult`], never a report.
 //!
 //! [`knee_counts`], [`ankle_counts`] and their inverses convert joint angles to motor encoder
 //! counts for the nonlinear knee and ankle drives (footnote 5: Newton-Raphson inverse).
@@ -29,7 +32,11 @@
 //!   in `targets` are active in that pose (feet bolted to different jig positions per pose).
 //! - `reference_offsets` (optional): known offsets of synthetic data, compared by the CLI.
 //!
-//! Unknown keys are errors; every error names the file, line and field. A complete file
+//! Unknown keys, repeated keys (`encoders`, `targets`, `reference_offsets`) and repeated names
+//! (`joints`, constraint and pose names) are errors, and so are numbers outside their physical
+//! ranges ([`limits`]): lengths within 10 m, angles (`rpy`, revolute encoder readings) within
+//! 2 pi rad, weights in `[0, 1e9]`. A leading byte-order mark is skipped. Every error names
+//! the file, line and field. A complete file
 //! (`crates/robots/data/calibration_example.json` is a 3-pose G1 example):
 //!
 //! ```
@@ -58,18 +65,21 @@ mod encoder;
 mod error;
 mod file;
 mod jig;
+pub mod limits;
+mod locate;
 mod problem;
+mod report;
 mod solve;
+mod spec;
+mod validate;
 
 pub use encoder::*;
 pub use error::CalibrationError;
-pub use file::{
-    CalibrationFile, ConstraintSpec, FrameSpec, LoadedFile, ModelSpec, PoseEntry, PoseSpec,
-};
+pub use file::LoadedFile;
 pub use jig::{
     so3_log, so3_right_jacobian_inv, BodyFrame, ClosureError, Components, JigConstraint,
 };
 pub use problem::{CalibratedJoint, CalibrationProblem, JigPose};
-pub use solve::{
-    calibrate, check_observability, Calibration, ConstraintReport, PoseReport, SolveOptions,
-};
+pub use report::{ConstraintReport, PoseReport};
+pub use solve::{calibrate, check_observability, Calibration, SolveOptions};
+pub use spec::{CalibrationFile, ConstraintSpec, FrameSpec, ModelSpec, PoseEntry, PoseSpec};

@@ -2,6 +2,7 @@
 //! unknown, jig constraints and the measured jig poses (thesis 3.5).
 
 use super::jig::{ClosureError, JigConstraint};
+use super::limits::{first_repeat, LENGTH};
 use super::CalibrationError;
 use biped_dynamics::{Data, Jacobians, Model};
 use nalgebra::{DMatrix, DVector, Isometry3};
@@ -66,8 +67,43 @@ pub(crate) struct Evaluation {
     pub pose_rows: Vec<std::ops::Range<usize>>,
 }
 
+/// One pose: a finite `q` of length `nq`, at least one active constraint of the
+/// `nconstraints`, finite targets with positions within [`LENGTH`].
+fn check_pose(p: &JigPose, nq: usize, nconstraints: usize) -> Result<(), CalibrationError> {
+    let invalid = |what: String| CalibrationError::Invalid(format!("pose `{}`: {what}", p.name));
+    if p.q_measured.len() != nq {
+        let n = p.q_measured.len();
+        return Err(invalid(format!("q has {n} entries, model nq = {nq}")));
+    }
+    if p.q_measured.iter().any(|x| !x.is_finite()) {
+        return Err(CalibrationError::NonFinite(format!("pose `{}`", p.name)));
+    }
+    if p.targets.is_empty() {
+        return Err(invalid("no jig constraint active".into()));
+    }
+    for (c, t) in &p.targets {
+        if *c >= nconstraints {
+            return Err(invalid(format!("constraint index {c} out of range")));
+        }
+        let v = t.translation.vector.iter().chain(t.rotation.coords.iter());
+        if v.clone().any(|x| !x.is_finite()) {
+            return Err(CalibrationError::NonFinite(format!(
+                "pose `{}` target",
+                p.name
+            )));
+        }
+        for &x in t.translation.vector.iter() {
+            LENGTH
+                .check(x)
+                .map_err(|m| invalid(format!("target position {m}")))?;
+        }
+    }
+    Ok(())
+}
+
 impl CalibrationProblem {
-    /// Validates and assembles a problem (non-empty joints and poses, finite data, valid indices).
+    /// Validates and assembles a problem: non-empty, distinct joints, poses with finite data
+    /// and target positions within [`LENGTH`], valid indices.
     pub fn new(
         model: Model,
         joints: Vec<CalibratedJoint>,
@@ -79,6 +115,9 @@ impl CalibrationProblem {
         }
         if poses.is_empty() {
             return Err(CalibrationError::Invalid("no jig poses".into()));
+        }
+        if let Some((_, again)) = first_repeat(joints.iter().map(|j| j.name.as_str())) {
+            return Err(CalibrationError::DuplicateJoint(joints[again].name.clone()));
         }
         for c in &constraints {
             let w = [c.position_weight, c.orientation_weight];
@@ -97,38 +136,7 @@ impl CalibrationProblem {
             }
         }
         for p in &poses {
-            if p.q_measured.len() != model.nq() {
-                return Err(CalibrationError::Invalid(format!(
-                    "pose `{}`: q has {} entries, model nq = {}",
-                    p.name,
-                    p.q_measured.len(),
-                    model.nq()
-                )));
-            }
-            if p.q_measured.iter().any(|x| !x.is_finite()) {
-                return Err(CalibrationError::NonFinite(format!("pose `{}`", p.name)));
-            }
-            if p.targets.is_empty() {
-                return Err(CalibrationError::Invalid(format!(
-                    "pose `{}`: no jig constraint active",
-                    p.name
-                )));
-            }
-            for (c, t) in &p.targets {
-                if *c >= constraints.len() {
-                    return Err(CalibrationError::Invalid(format!(
-                        "pose `{}`: constraint index {c} out of range",
-                        p.name
-                    )));
-                }
-                let v = t.translation.vector.iter().chain(t.rotation.coords.iter());
-                if v.clone().any(|x| !x.is_finite()) {
-                    return Err(CalibrationError::NonFinite(format!(
-                        "pose `{}` target",
-                        p.name
-                    )));
-                }
-            }
+            check_pose(p, model.nq(), constraints.len())?;
         }
         Ok(Self {
             model,

@@ -1,8 +1,8 @@
 //! Offset estimation by Levenberg-Marquardt least squares over all jig poses, with an
 //! observability (rank) check and a per-pose residual report (thesis 3.5).
 
-use super::jig::ClosureError;
 use super::problem::{CalibrationProblem, Evaluation};
+use super::report::{finite_result, report, rms, PoseReport};
 use super::CalibrationError;
 use nalgebra::{DMatrix, DVector};
 
@@ -28,38 +28,6 @@ impl Default for SolveOptions {
     }
 }
 
-/// Closure errors of one constraint in one pose, before and after calibration.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ConstraintReport {
-    /// Constraint name.
-    pub name: String,
-    /// Position error norm before \[m].
-    pub position_before: f64,
-    /// Orientation error angle before \[rad].
-    pub orientation_before: f64,
-    /// Position error norm after \[m].
-    pub position_after: f64,
-    /// Orientation error angle after \[rad].
-    pub orientation_after: f64,
-}
-
-/// Weighted residual statistics of one pose before and after calibration.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PoseReport {
-    /// Pose name.
-    pub name: String,
-    /// RMS of the weighted residual rows before.
-    pub rms_before: f64,
-    /// Largest absolute weighted residual row before.
-    pub max_before: f64,
-    /// RMS after.
-    pub rms_after: f64,
-    /// Largest absolute row after.
-    pub max_after: f64,
-    /// Per-constraint closure errors.
-    pub constraints: Vec<ConstraintReport>,
-}
-
 /// Result of a calibration.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Calibration {
@@ -80,9 +48,19 @@ pub struct Calibration {
     pub poses: Vec<PoseReport>,
 }
 
-/// Column norms of `j`.
+/// Column norms of `j`, computed without overflow (each column scaled by its largest entry
+/// first): rows weighted by 1e300 have a finite norm.
 fn column_norms(j: &DMatrix<f64>) -> Vec<f64> {
-    j.column_iter().map(|c| c.norm()).collect()
+    j.column_iter()
+        .map(|c| {
+            let m = c.amax();
+            if m == 0.0 || !m.is_finite() {
+                m
+            } else {
+                m * (c / m).norm()
+            }
+        })
+        .collect()
 }
 
 /// Observability check: errors with the joints spanning the (near) null space of the
@@ -115,7 +93,10 @@ pub fn check_observability(
     }
     let mut scaled = j.clone();
     for (i, mut c) in scaled.column_iter_mut().enumerate() {
-        c /= norms[i];
+        // In two steps, so that a column norm near f64::MAX does not underflow the scaling.
+        let m = c.amax();
+        c /= m;
+        c /= norms[i] / m;
     }
     let svd = scaled.svd(false, true);
     let v_t = svd
@@ -161,16 +142,58 @@ fn lm_step(ev: &Evaluation, lambda: f64) -> Option<DVector<f64>> {
 }
 
 /// Estimates the encoder offsets minimising the weighted jig-closure residual over all poses.
+///
+/// Solved on the problem with its weights divided by the largest one (the same minimiser, rows
+/// of order one: weights of 1e300 neither overflow `J^T J` nor look unobservable); residuals
+/// are reported in the given weights. A result that is not finite is an error, not a report.
 pub fn calibrate(
     problem: &CalibrationProblem,
     options: &SolveOptions,
 ) -> Result<Calibration, CalibrationError> {
-    let k = problem.joints().len();
-    let mut x = DVector::zeros(k);
-    let before = problem.evaluate(&x)?;
-    check_observability(problem, &before.j, options.rank_tolerance)?;
+    let (scaled, weight) = normalised(problem);
+    let before = scaled.evaluate(&DVector::zeros(problem.joints().len()))?;
+    check_observability(&scaled, &before.j, options.rank_tolerance)?;
+    let (x, ev, iterations) = levenberg_marquardt(&scaled, &before, options)?;
+    let singular_values = check_observability(&scaled, &ev.j, options.rank_tolerance)?;
+    let cal = Calibration {
+        std_errors: std_errors(&ev),
+        offsets: x,
+        joints: problem.joints().iter().map(|j| j.name.clone()).collect(),
+        singular_values,
+        iterations,
+        rms_after: weight * rms(ev.r.as_slice()),
+        poses: report(&scaled, &before, &ev, weight),
+    };
+    finite_result(&cal)?;
+    Ok(cal)
+}
+
+/// `problem` with its weights divided by the largest one, and that weight (1 if all are 0).
+fn normalised(problem: &CalibrationProblem) -> (CalibrationProblem, f64) {
+    let weights = problem.constraints().iter();
+    let top = weights
+        .flat_map(|c| [c.position_weight, c.orientation_weight])
+        .fold(0.0, f64::max);
+    let mut scaled = problem.clone();
+    if top > 0.0 {
+        for c in &mut scaled.constraints {
+            c.position_weight /= top;
+            c.orientation_weight /= top;
+        }
+    }
+    (scaled, if top > 0.0 { top } else { 1.0 })
+}
+
+/// Levenberg-Marquardt from zero offsets (`start` is the evaluation there): the offsets, the
+/// evaluation at them and the iterations, or [`CalibrationError::NoConvergence`].
+fn levenberg_marquardt(
+    problem: &CalibrationProblem,
+    start: &Evaluation,
+    options: &SolveOptions,
+) -> Result<(DVector<f64>, Evaluation, usize), CalibrationError> {
+    let mut x = DVector::zeros(problem.joints().len());
     let mut ev = problem.evaluate(&x)?;
-    let mut cost = ev.r.norm_squared();
+    let mut cost = start.r.norm_squared();
     let mut lambda = 1e-6;
     let mut iterations = 0;
     let mut converged = false;
@@ -200,16 +223,7 @@ pub fn calibrate(
     if !converged {
         return Err(CalibrationError::NoConvergence { iterations, cost });
     }
-    let singular_values = check_observability(problem, &ev.j, options.rank_tolerance)?;
-    Ok(Calibration {
-        std_errors: std_errors(&ev),
-        offsets: x,
-        joints: problem.joints().iter().map(|j| j.name.clone()).collect(),
-        singular_values,
-        iterations,
-        rms_after: rms(ev.r.as_slice()),
-        poses: report(problem, &before, &ev),
-    })
+    Ok((x, ev, iterations))
 }
 
 /// `sqrt(s^2 (J^T J)^-1)_ii` with `s^2 = |r|^2 / (m - k)`.
@@ -223,59 +237,4 @@ fn std_errors(ev: &Evaluation) -> DVector<f64> {
         }
         _ => DVector::zeros(k),
     }
-}
-
-/// RMS of a slice (0 for an empty one).
-fn rms(r: &[f64]) -> f64 {
-    if r.is_empty() {
-        return 0.0;
-    }
-    (r.iter().map(|x| x * x).sum::<f64>() / r.len() as f64).sqrt()
-}
-
-/// Largest absolute entry.
-fn max_abs(r: &[f64]) -> f64 {
-    r.iter().fold(0.0, |m, x| m.max(x.abs()))
-}
-
-/// Per-pose, per-constraint report from the evaluations before and after.
-fn report(
-    problem: &CalibrationProblem,
-    before: &Evaluation,
-    after: &Evaluation,
-) -> Vec<PoseReport> {
-    let pair = |e: &ClosureError| (e.position.norm(), e.orientation.norm());
-    problem
-        .poses()
-        .iter()
-        .enumerate()
-        .map(|(p, pose)| {
-            let rb = &before.r.as_slice()[before.pose_rows[p].clone()];
-            let ra = &after.r.as_slice()[after.pose_rows[p].clone()];
-            let constraints = pose
-                .targets
-                .iter()
-                .enumerate()
-                .map(|(i, (c, _))| {
-                    let (pb, ob) = pair(&before.errors[p][i]);
-                    let (pa, oa) = pair(&after.errors[p][i]);
-                    ConstraintReport {
-                        name: problem.constraints()[*c].name.clone(),
-                        position_before: pb,
-                        orientation_before: ob,
-                        position_after: pa,
-                        orientation_after: oa,
-                    }
-                })
-                .collect();
-            PoseReport {
-                name: pose.name.clone(),
-                rms_before: rms(rb),
-                max_before: max_abs(rb),
-                rms_after: rms(ra),
-                max_after: max_abs(ra),
-                constraints,
-            }
-        })
-        .collect()
 }
