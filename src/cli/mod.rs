@@ -2,6 +2,9 @@
 
 pub mod calibrate;
 pub mod dynamics;
+pub mod files;
+pub mod out;
+pub mod range;
 pub mod simulate;
 pub mod ssv;
 pub mod walk;

@@ -14,6 +14,7 @@ mod model;
 mod output;
 mod parse;
 mod progress;
+mod recording;
 mod report;
 mod setup;
 
@@ -49,7 +50,7 @@ pub struct SimulateArgs {
     )]
     sole_center: Option<String>,
     /// Sole rectangle length (link x) and width (link y) in m (default 0.2,0.1).
-    #[arg(long, value_name = "LENGTH,WIDTH")]
+    #[arg(long, value_name = "LENGTH,WIDTH", allow_hyphen_values = true)]
     sole_size: Option<String>,
     /// Hip and ankle adduction joints for `sway` on a URDF robot.
     #[arg(long, value_name = "HIP_L,HIP_R,ANKLE_L,ANKLE_R")]
@@ -169,7 +170,7 @@ pub fn run(args: SimulateArgs) -> CliResult {
     let plant = sim.plant();
     let files = output::write_all(&rec, plant, &summary, &info, &chosen, &out_dir)?;
     let pd = sim.controller();
-    report::print_report(&summary, plant, &rec, &info, pd, &out_dir, &files);
+    report::print_report(&summary, plant, &rec, &info, pd, &out_dir, &files)?;
     let failed = args.check && !summary.passed();
     Ok(if failed {
         ExitCode::FAILURE

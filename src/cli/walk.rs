@@ -3,7 +3,7 @@
 //! With `--dynamic` the walk of one method (`--method`, default minimisation) is then tracked
 //! in the contact simulation: `dynamic.csv`, plots and a `"dynamic"` summary entry.
 
-use super::CliResult;
+use super::{range, CliResult};
 use biped_control::pattern::WalkingPattern;
 use biped_control::walk::run::RECORDED_JOINTS;
 use biped_control::walk::{
@@ -16,17 +16,20 @@ use clap::Args;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-/// Arguments of `biped walk`.
+/// Arguments of `biped walk`; the numbers are checked against [`range::walk`] while parsing.
 #[derive(Args)]
 pub struct WalkArgs {
-    /// Number of steps.
-    #[arg(long, default_value_t = 10)]
+    /// Number of steps (1 to 100).
+    #[arg(long, value_name = "N", default_value_t = 10, allow_hyphen_values = true,
+          value_parser = |s: &str| range::walk::STEPS.parse_whole(s).map(|n| n as usize))]
     steps: usize,
-    /// Step length in m (footprint ahead of the previous one).
-    #[arg(long, default_value_t = 0.4)]
+    /// Step length in m (footprint ahead of the previous one; -0.6 to 0.6, negative: backwards).
+    #[arg(long, value_name = "M", default_value_t = 0.4, allow_hyphen_values = true,
+          value_parser = |s: &str| range::walk::STEP_LENGTH.parse(s))]
     step_length: f64,
-    /// Step time in s.
-    #[arg(long, default_value_t = 0.8)]
+    /// Step time in s (0.2 to 5).
+    #[arg(long, value_name = "S", default_value_t = 0.8, allow_hyphen_values = true,
+          value_parser = |s: &str| range::walk::STEP_TIME.parse(s))]
     step_time: f64,
     /// Arm method: none, reference, compensation, minimization or all.
     #[arg(long, default_value = "all")]
@@ -44,7 +47,7 @@ pub struct WalkArgs {
     #[arg(long, requires = "dynamic")]
     end_stops: bool,
     /// Output directory.
-    #[arg(long, default_value = "out/walk")]
+    #[arg(long, value_name = "DIR", default_value = "out/walk")]
     out: PathBuf,
 }
 
@@ -54,9 +57,6 @@ pub fn run(args: WalkArgs) -> CliResult {
         "all" => Method::ALL.to_vec(),
         m => vec![m.parse()?],
     };
-    if args.steps == 0 {
-        return Err("--steps must be at least 1".into());
-    }
     let lola = lola::build(LolaType::Type2)?;
     let params = walk_pattern_params(&lola, args.steps, args.step_length, args.step_time)?;
     let pattern = WalkingPattern::generate(&params)?;

@@ -1,6 +1,7 @@
 //! SVG plot of forward-dynamics run time over the Dill level, like thesis Fig. 2.19 (log scales).
 
 use super::bench::Timings;
+use crate::cli::files::{self, WithPath};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -10,7 +11,7 @@ type Series = (&'static str, RGBColor, fn(&Timings) -> f64);
 /// Writes run time (us, log) over DoFs (log) per algorithm to `path` (parent folders created).
 pub fn runtime_svg(path: &Path, rows: &[Timings]) -> Result<(), Box<dyn std::error::Error>> {
     if let Some(dir) = path.parent() {
-        std::fs::create_dir_all(dir)?;
+        files::create_dir_all(dir)?;
     }
     let series: [Series; 3] = [
         ("O(n)", RED, |t| t.on),
@@ -59,6 +60,6 @@ pub fn runtime_svg(path: &Path, rows: &[Timings]) -> Result<(), Box<dyn std::err
         .background_style(WHITE.mix(0.8))
         .border_style(BLACK)
         .draw()?;
-    root.present()?;
+    root.present().with_path(path)?;
     Ok(())
 }
