@@ -3,6 +3,8 @@
 pub mod calibrate;
 pub mod dynamics;
 pub mod files;
+#[cfg(test)]
+mod option_props;
 pub mod out;
 pub mod range;
 pub mod simulate;

@@ -16,7 +16,7 @@ mod parse;
 mod progress;
 mod recording;
 mod report;
-mod setup;
+pub(crate) mod setup;
 
 use super::CliResult;
 use biped_sim::record::Recorder;
@@ -42,12 +42,7 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "LEFT,RIGHT")]
     feet: Option<String>,
     /// Centre of each sole rectangle in its link frame in m (default 0,0,-0.05).
-    #[arg(
-        long,
-        value_name = "X,Y,Z",
-        requires = "urdf",
-        allow_hyphen_values = true
-    )]
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
     sole_center: Option<String>,
     /// Sole rectangle length (link x) and width (link y) in m (default 0.2,0.1).
     #[arg(long, value_name = "LENGTH,WIDTH", allow_hyphen_values = true)]

@@ -55,7 +55,7 @@ pub struct WalkArgs {
 pub fn run(args: WalkArgs) -> CliResult {
     let methods: Vec<Method> = match args.method.as_str() {
         "all" => Method::ALL.to_vec(),
-        m => vec![m.parse()?],
+        m => vec![m.parse().map_err(|e| format!("--method: {e}"))?],
     };
     let lola = lola::build(LolaType::Type2)?;
     let params = walk_pattern_params(&lola, args.steps, args.step_length, args.step_time)?;

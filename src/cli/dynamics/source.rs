@@ -16,10 +16,10 @@ pub struct SourceArgs {
     #[arg(long, value_name = "FILE")]
     urdf: Option<PathBuf>,
     /// Give the URDF root link a free-flyer joint named "root" (q: xyz + quaternion xyzw).
-    #[arg(long, requires = "urdf")]
+    #[arg(long)]
     floating: bool,
     /// Reject URDF `<mimic>` joints instead of ignoring them with a warning.
-    #[arg(long, requires = "urdf")]
+    #[arg(long)]
     reject_mimic: bool,
     /// Use Featherstone's Dill(N) benchmark tree (2^N revolute bodies, thesis 2.10.1).
     #[arg(long, value_name = "N", allow_hyphen_values = true)]

@@ -99,4 +99,27 @@ mod tests {
             assert!(r.at(0.0) && r.at(cycles as f64 * 1e-3), "first and last");
         }
     }
+
+    /// 1e6 s at 1 kHz is 1e9 + 1 rows of 135 + 2 columns, 1096 bytes a row: 1020.7 GiB. The
+    /// 1 GiB cap holds 2^30 / 1096 = 979690 rows; every 1021st period gives
+    /// floor(1e9 / 1021) + 2 = 979433 rows, every 1020th 980394: 1021 is the way out.
+    #[test]
+    fn over_the_cap_names_the_every_that_fits() {
+        let e = Recording::new(1e6, 1e-3, 1)
+            .check_size(135, 1e6)
+            .unwrap_err();
+        assert!(
+            e.contains("1000000001 rows x 137 columns x 8 bytes = 1020.7 GiB"),
+            "{e}"
+        );
+        assert!(
+            e.contains("over the 1 GiB cap") && e.contains("--every 1021 or more"),
+            "{e}"
+        );
+        assert!(Recording::new(1e6, 1e-3, 1021).check_size(135, 1e6).is_ok());
+        assert!(Recording::new(1e6, 1e-3, 1020)
+            .check_size(135, 1e6)
+            .is_err());
+        assert!(Recording::new(3.0, 1e-3, 1).check_size(135, 3.0).is_ok());
+    }
 }
