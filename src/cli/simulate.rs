@@ -93,13 +93,15 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "NAME", default_value = "stand")]
     scenario: String,
     /// Simulated time in s (default: the scenario's own, long enough for its pass criteria:
-    /// stand 3, drop 4, sway 5).
+    /// stand 3, drop 4, sway 5); one control period to 1e6 s, and the recorded samples must
+    /// fit 1 GiB (rows x columns x 8 bytes; see --every).
     #[arg(long, value_name = "S", allow_hyphen_values = true)]
     duration: Option<String>,
     /// Integration method: `euler`, `symplectic`, `rk4` or `dopri5`.
     #[arg(long, value_name = "METHOD", default_value = "rk4")]
     integrator: String,
-    /// Fixed step in s of euler / symplectic / rk4 (default: control period; Type 3: 1e-4).
+    /// Fixed step in s of euler / symplectic / rk4 (default: control period; Type 3: 1e-4);
+    /// 1e-6 up to the control period, rounded down to a whole number of steps per period.
     #[arg(long, value_name = "H", allow_hyphen_values = true)]
     step: Option<String>,
     /// Relative and absolute tolerance of dopri5 (default 1e-6,1e-9).
