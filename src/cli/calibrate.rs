@@ -1,6 +1,7 @@
 //! `biped calibrate`: encoder-offset calibration from jig measurements (thesis 3.5).
 
 use super::CliResult;
+use crate::cli::out::{errln, outln};
 use biped_robots::calibration::{calibrate, Calibration, LoadedFile, PoseReport, SolveOptions};
 use clap::Args;
 use serde_json::json;
@@ -25,14 +26,14 @@ pub fn run(args: CalibrateArgs) -> CliResult {
     let file = LoadedFile::read(&args.file)?;
     let urdf = file.load_model()?;
     for w in &urdf.warnings {
-        eprintln!("warning: {w}");
+        errln!("warning: {w}");
     }
     let problem = file.problem(&urdf)?;
     let cal = calibrate(&problem, &SolveOptions::default())?;
     if args.json {
-        println!("{}", to_json(&file, &cal));
+        outln!("{}", to_json(&file, &cal))?;
     } else {
-        print_text(&file, &cal);
+        print_text(&file, &cal)?;
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -99,46 +100,55 @@ fn pose_json(r: &PoseReport) -> serde_json::Value {
 }
 
 /// Human-readable report.
-fn print_text(file: &LoadedFile, cal: &Calibration) {
-    println!(
+fn print_text(file: &LoadedFile, cal: &Calibration) -> std::io::Result<()> {
+    outln!(
         "{}: {} joints, {} poses, {} iterations",
         file.file,
         cal.joints.len(),
         cal.poses.len(),
         cal.iterations
-    );
-    println!(
+    )?;
+    outln!(
         "{:<28} {:>13} {:>11} {:>13}",
-        "joint", "offset [rad]", "std err", "reference"
-    );
+        "joint",
+        "offset [rad]",
+        "std err",
+        "reference"
+    )?;
     for (i, name) in cal.joints.iter().enumerate() {
         let reference = file.spec.reference_offsets.get(name);
         let r = reference.map_or("-".to_string(), |x| format!("{x:.6}"));
-        println!(
+        outln!(
             "{name:<28} {:>13.6} {:>11.2e} {r:>13}",
-            cal.offsets[i], cal.std_errors[i]
-        );
+            cal.offsets[i],
+            cal.std_errors[i]
+        )?;
     }
     let cond = condition(cal);
-    println!("observability: full rank, condition number {cond:.3e}");
+    outln!("observability: full rank, condition number {cond:.3e}")?;
     if cond > ILL_CONDITIONED {
-        eprintln!("warning: ill-conditioned calibration (condition {cond:.1e}): add or vary poses");
+        errln!("warning: ill-conditioned calibration (condition {cond:.1e}): add or vary poses");
     }
-    println!("residual (weighted rows): rms / max before -> after");
+    outln!("residual (weighted rows): rms / max before -> after")?;
     for r in &cal.poses {
-        println!(
+        outln!(
             "  {}: rms {:.3e} -> {:.3e}, max {:.3e} -> {:.3e}",
-            r.name, r.rms_before, r.rms_after, r.max_before, r.max_after
-        );
+            r.name,
+            r.rms_before,
+            r.rms_after,
+            r.max_before,
+            r.max_after
+        )?;
         for c in &r.constraints {
-            println!(
+            outln!(
                 "    {}: position {:.4} -> {:.4} mm, orientation {:.4} -> {:.4} mrad",
                 c.name,
                 1e3 * c.position_before,
                 1e3 * c.position_after,
                 1e3 * c.orientation_before,
                 1e3 * c.orientation_after
-            );
+            )?;
         }
     }
+    Ok(())
 }

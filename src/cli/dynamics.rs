@@ -50,9 +50,9 @@ impl From<AlgorithmArg> for biped_dynamics::Algorithm {
 pub struct DynamicsArgs {
     #[command(flatten)]
     source: SourceArgs,
-    /// Forward-dynamics algorithm.
-    #[arg(long, value_enum, default_value = "on")]
-    algorithm: AlgorithmArg,
+    /// Forward-dynamics algorithm (default `on`; not with --mass-matrix or --inverse).
+    #[arg(long, value_enum)]
+    algorithm: Option<AlgorithmArg>,
     /// Read `{"q"}` lines and write the mass matrix `{"M": [[..], ..]}`.
     #[arg(long)]
     mass_matrix: bool,
@@ -68,14 +68,14 @@ pub struct BenchArgs {
     #[command(flatten)]
     source: SourceArgs,
     /// Dill levels `A..B` (inclusive); also writes a run-time plot like Fig. 2.19 under `out/`.
-    #[arg(long, value_name = "A..B", value_parser = parse_range)]
+    #[arg(long, value_name = "A..B", value_parser = parse_range, allow_hyphen_values = true)]
     dill_range: Option<(u32, u32)>,
     /// Print JSON (`{"on": ns, "crba": ns, "sparse": ns, ..}`; an array with `"n"` for a range).
     #[arg(long)]
     json: bool,
 }
 
-/// Parses `A..B` (inclusive, A <= B).
+/// Parses `A..B` (inclusive, A <= B <= the largest Dill level).
 fn parse_range(text: &str) -> Result<(u32, u32), String> {
     let (a, b) = text
         .split_once("..")
@@ -88,6 +88,12 @@ fn parse_range(text: &str) -> Result<(u32, u32), String> {
     let (a, b) = (parse(a)?, parse(b)?);
     if a > b {
         return Err(format!("empty range {a}..{b}"));
+    }
+    let max = biped_dynamics::dill::MAX_DILL_LEVEL;
+    if b > max {
+        return Err(format!(
+            "level {b} is too large (at most {max} is supported)"
+        ));
     }
     Ok((a, b))
 }
@@ -128,12 +134,20 @@ pub fn run_model(args: ModelArgs) -> CliResult {
 /// Run `biped dynamics`.
 pub fn run_dynamics(args: DynamicsArgs) -> CliResult {
     let loaded = args.source.to_source()?.load()?;
+    if args.algorithm.is_some() && (args.mass_matrix || args.inverse) {
+        let other = if args.mass_matrix {
+            "--mass-matrix"
+        } else {
+            "--inverse"
+        };
+        return Err(format!("--algorithm: only applies to forward dynamics, not {other}").into());
+    }
     let mode = if args.mass_matrix {
         stream::Mode::MassMatrix
     } else if args.inverse {
         stream::Mode::Inverse
     } else {
-        stream::Mode::Forward(args.algorithm.into())
+        stream::Mode::Forward(args.algorithm.unwrap_or(AlgorithmArg::On).into())
     };
     let stdin = std::io::stdin().lock();
     let stdout = std::io::BufWriter::new(std::io::stdout().lock());
@@ -148,7 +162,10 @@ pub fn run_dynamics(args: DynamicsArgs) -> CliResult {
 /// Run `biped bench dynamics`.
 pub fn run_bench(args: BenchArgs) -> CliResult {
     match args.dill_range {
-        Some((a, b)) => bench::run_range(a, b, args.json),
+        Some((a, b)) => {
+            args.source.check_urdf_only()?;
+            bench::run_range(a, b, args.json)
+        }
         None => bench::run_one(&args.source.to_source()?, args.json),
     }
 }

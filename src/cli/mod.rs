@@ -2,9 +2,14 @@
 
 pub mod calibrate;
 pub mod dynamics;
+pub mod files;
 pub mod interrupt;
 mod json_lines;
+#[cfg(test)]
+mod option_props;
+pub mod out;
 pub mod outdir;
+pub mod range;
 pub mod simulate;
 pub mod ssv;
 pub mod walk;

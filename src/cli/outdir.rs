@@ -9,13 +9,14 @@
 //! a directory that one is writing. A run killed outright (SIGKILL, a second Ctrl-C) leaves
 //! the previous files untouched; the next run into the directory removes its leftovers.
 
+use super::files::WithPath;
 use super::interrupt;
 use serde_json::{json, Map, Value};
 use std::fs::{self, File, TryLockError};
 use std::path::{Path, PathBuf};
 
 /// Result of this module: errors are one line that names the directory.
-pub type DirResult<T> = Result<T, String>;
+pub type DirResult<T> = Result<T, Box<dyn std::error::Error>>;
 
 /// File that marks a directory as a biped result (so that `--out` never replaces other data).
 const MARKER: &str = ".biped-output";
@@ -54,11 +55,6 @@ pub struct OutputDir {
     _lock: File,
 }
 
-/// `DIR: what` for errors about `dir`.
-fn at(dir: &Path, what: impl std::fmt::Display) -> String {
-    format!("{}: {what}", dir.display())
-}
-
 impl OutputDir {
     /// Locks `target` for this run and creates its staging sibling; `option` names the
     /// command-line option for errors (e.g. `--out`). Installs the SIGINT/SIGTERM handler.
@@ -72,10 +68,12 @@ impl OutputDir {
             Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
             _ => PathBuf::from("."),
         };
-        fs::create_dir_all(&parent).map_err(|e| format!("{option} {}", at(target, e)))?;
+        fs::create_dir_all(&parent).map_err(|e| format!("{option} {}: {e}", target.display()))?;
         let lock_path = parent.join(format!(".{name}.lock"));
-        let lock =
-            File::create(&lock_path).map_err(|e| format!("{option} {}", at(&lock_path, e)))?;
+        let lock = File::create(&lock_path).map_err(|e| {
+            let lock = lock_path.display();
+            format!("{option} {}: cannot create its lock file {lock}: {e}", target.display())
+        })?;
         match lock.try_lock() {
             Ok(()) => {}
             Err(TryLockError::WouldBlock) => {
@@ -83,9 +81,12 @@ impl OutputDir {
                     "{option} {}: another biped run is writing into this directory (lock {})",
                     target.display(),
                     lock_path.display()
-                ))
+                )
+                .into())
             }
-            Err(TryLockError::Error(e)) => return Err(format!("{option} {}", at(&lock_path, e))),
+            Err(TryLockError::Error(e)) => {
+                return Err(format!("{option} {}: {e}", lock_path.display()).into())
+            }
         }
         let dir = OutputDir {
             target: target.to_path_buf(),
@@ -94,8 +95,9 @@ impl OutputDir {
         };
         dir.recover(&parent, name)?;
         dir.check_replaceable(option)?;
-        fs::create_dir(&dir.staging).map_err(|e| format!("{option} {}", at(&dir.staging, e)))?;
-        fs::write(dir.staging.join(MARKER), "").map_err(|e| at(&dir.staging, e))?;
+        fs::create_dir(&dir.staging)
+            .map_err(|e| format!("{option} {}: {e}", dir.staging.display()))?;
+        fs::write(dir.staging.join(MARKER), "").with_path(&dir.staging)?;
         interrupt::install();
         Ok(dir)
     }
@@ -115,15 +117,15 @@ impl OutputDir {
     fn recover(&self, parent: &Path, name: &str) -> DirResult<()> {
         let partial = format!(".{name}.partial-");
         let old = format!(".{name}.old-");
-        let entries = fs::read_dir(parent).map_err(|e| at(parent, e))?;
+        let entries = fs::read_dir(parent).with_path(parent)?;
         for entry in entries.flatten() {
             let file = entry.file_name();
             let file = file.to_string_lossy();
             let path = entry.path();
             if file.starts_with(&old) && !self.target.exists() {
-                fs::rename(&path, &self.target).map_err(|e| at(&path, e))?;
+                fs::rename(&path, &self.target).with_path(&path)?;
             } else if file.starts_with(&partial) || file.starts_with(&old) {
-                fs::remove_dir_all(&path).map_err(|e| at(&path, e))?;
+                fs::remove_dir_all(&path).with_path(&path)?;
             }
         }
         Ok(())
@@ -136,12 +138,9 @@ impl OutputDir {
             return Ok(());
         }
         if !t.is_dir() {
-            return Err(format!(
-                "{option} {}: exists and is not a directory",
-                t.display()
-            ));
+            return Err(format!("{option} {}: exists and is not a directory", t.display()).into());
         }
-        let mut entries = fs::read_dir(t).map_err(|e| format!("{option} {}", at(t, e)))?;
+        let mut entries = fs::read_dir(t).map_err(|e| format!("{option} {}: {e}", t.display()))?;
         let ours = t.join(MARKER).exists() || t.join("summary.json").exists();
         if ours || entries.next().is_none() {
             return Ok(());
@@ -149,7 +148,8 @@ impl OutputDir {
         Err(format!(
             "{option} {}: the directory holds files that are not a biped result; name a new or empty directory",
             t.display()
-        ))
+        )
+        .into())
     }
 
     /// Swaps the staging directory into place (the previous result is removed).
@@ -163,11 +163,11 @@ impl OutputDir {
             let aside = self
                 .staging
                 .with_file_name(format!(".{name}.old-{}", std::process::id()));
-            fs::rename(t, &aside).map_err(|e| at(t, e))?;
-            fs::rename(&self.staging, t).map_err(|e| at(t, e))?;
-            fs::remove_dir_all(&aside).map_err(|e| at(&aside, e))?;
+            fs::rename(t, &aside).with_path(t)?;
+            fs::rename(&self.staging, t).with_path(t)?;
+            fs::remove_dir_all(&aside).with_path(&aside)?;
         } else {
-            fs::rename(&self.staging, t).map_err(|e| at(t, e))?;
+            fs::rename(&self.staging, t).with_path(t)?;
         }
         Ok(())
     }
@@ -203,8 +203,8 @@ pub fn stamp(summary: &mut Map<String, Value>, status: Status) {
 
 /// Writes `value` as pretty JSON (one trailing newline) to `path`.
 pub fn write_json(path: &Path, value: &Value) -> DirResult<()> {
-    let text = serde_json::to_string_pretty(value).map_err(|e| at(path, e))?;
-    fs::write(path, text + "\n").map_err(|e| at(path, e))
+    let text = serde_json::to_string_pretty(value).with_path(path)?;
+    Ok(fs::write(path, text + "\n").with_path(path)?)
 }
 
 /// The error of an interrupted run, once [`interrupt::requested`] says so.

@@ -14,8 +14,9 @@ mod model;
 mod output;
 mod parse;
 mod progress;
+mod recording;
 mod report;
-mod setup;
+pub(crate) mod setup;
 
 use super::outdir::{self, OutputDir};
 use super::{interrupt, CliResult};
@@ -42,15 +43,10 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "LEFT,RIGHT")]
     feet: Option<String>,
     /// Centre of each sole rectangle in its link frame in m (default 0,0,-0.05).
-    #[arg(
-        long,
-        value_name = "X,Y,Z",
-        requires = "urdf",
-        allow_hyphen_values = true
-    )]
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
     sole_center: Option<String>,
     /// Sole rectangle length (link x) and width (link y) in m (default 0.2,0.1).
-    #[arg(long, value_name = "LENGTH,WIDTH")]
+    #[arg(long, value_name = "LENGTH,WIDTH", allow_hyphen_values = true)]
     sole_size: Option<String>,
     /// Hip and ankle adduction joints for `sway` on a URDF robot.
     #[arg(long, value_name = "HIP_L,HIP_R,ANKLE_L,ANKLE_R")]
@@ -98,13 +94,15 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "NAME", default_value = "stand")]
     scenario: String,
     /// Simulated time in s (default: the scenario's own, long enough for its pass criteria:
-    /// stand 3, drop 4, sway 5).
+    /// stand 3, drop 4, sway 5); one control period to 1e6 s, and the recorded samples must
+    /// fit 1 GiB (rows x columns x 8 bytes; see --every).
     #[arg(long, value_name = "S", allow_hyphen_values = true)]
     duration: Option<String>,
     /// Integration method: `euler`, `symplectic`, `rk4` or `dopri5`.
     #[arg(long, value_name = "METHOD", default_value = "rk4")]
     integrator: String,
-    /// Fixed step in s of euler / symplectic / rk4 (default: control period; Type 3: 1e-4).
+    /// Fixed step in s of euler / symplectic / rk4 (default: control period; Type 3: 1e-4);
+    /// 1e-6 up to the control period, rounded down to a whole number of steps per period.
     #[arg(long, value_name = "H", allow_hyphen_values = true)]
     step: Option<String>,
     /// Relative and absolute tolerance of dopri5 (default 1e-6,1e-9).
@@ -172,7 +170,7 @@ pub fn run(args: SimulateArgs) -> CliResult {
     let files = output::write_all(&rec, plant, &summary, &info, &chosen, out.path())?;
     out.commit()?;
     let pd = sim.controller();
-    report::print_report(&summary, plant, &rec, &info, pd, &target, &files);
+    report::print_report(&summary, plant, &rec, &info, pd, &target, &files)?;
     let failed = args.check && !summary.passed();
     Ok(if failed {
         ExitCode::FAILURE

@@ -4,7 +4,8 @@
 //! in the contact simulation: `dynamic.csv`, plots and a `"dynamic"` summary entry.
 
 use super::outdir::{self, OutputDir, Status};
-use super::{interrupt, CliResult};
+use super::{interrupt, range, CliResult};
+use crate::cli::out::{errln, outln};
 use biped_control::pattern::WalkingPattern;
 use biped_control::walk::run::RECORDED_JOINTS;
 use biped_control::walk::{
@@ -18,17 +19,20 @@ use serde_json::{Map, Value};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-/// Arguments of `biped walk`.
+/// Arguments of `biped walk`; the numbers are checked against [`range::walk`] while parsing.
 #[derive(Args)]
 pub struct WalkArgs {
-    /// Number of steps.
-    #[arg(long, default_value_t = 10)]
+    /// Number of steps (1 to 100).
+    #[arg(long, value_name = "N", default_value_t = 10, allow_hyphen_values = true,
+          value_parser = |s: &str| range::walk::STEPS.parse_whole(s).map(|n| n as usize))]
     steps: usize,
-    /// Step length in m (footprint ahead of the previous one).
-    #[arg(long, default_value_t = 0.4)]
+    /// Step length in m (footprint ahead of the previous one; -0.6 to 0.6, negative: backwards).
+    #[arg(long, value_name = "M", default_value_t = 0.4, allow_hyphen_values = true,
+          value_parser = |s: &str| range::walk::STEP_LENGTH.parse(s))]
     step_length: f64,
-    /// Step time in s.
-    #[arg(long, default_value_t = 0.8)]
+    /// Step time in s (0.2 to 5).
+    #[arg(long, value_name = "S", default_value_t = 0.8, allow_hyphen_values = true,
+          value_parser = |s: &str| range::walk::STEP_TIME.parse(s))]
     step_time: f64,
     /// Arm method: none, reference, compensation, minimization or all.
     #[arg(long, default_value = "all")]
@@ -46,7 +50,7 @@ pub struct WalkArgs {
     #[arg(long, requires = "dynamic")]
     end_stops: bool,
     /// Output directory.
-    #[arg(long, default_value = "out/walk")]
+    #[arg(long, value_name = "DIR", default_value = "out/walk")]
     out: PathBuf,
 }
 
@@ -54,11 +58,8 @@ pub struct WalkArgs {
 pub fn run(args: WalkArgs) -> CliResult {
     let methods: Vec<Method> = match args.method.as_str() {
         "all" => Method::ALL.to_vec(),
-        m => vec![m.parse()?],
+        m => vec![m.parse().map_err(|e| format!("--method: {e}"))?],
     };
-    if args.steps == 0 {
-        return Err("--steps must be at least 1".into());
-    }
     let lola = lola::build(LolaType::Type2)?;
     let params = walk_pattern_params(&lola, args.steps, args.step_length, args.step_time)?;
     let pattern = WalkingPattern::generate(&params)?;
@@ -79,7 +80,7 @@ pub fn run(args: WalkArgs) -> CliResult {
     outdir::stamp(&mut summary, Status::Completed);
     outdir::write_json(&out.path().join("summary.json"), &Value::Object(summary))?;
     out.commit()?;
-    println!("wrote {}", args.out.display());
+    outln!("wrote {}", args.out.display())?;
     match dynamic.map(|r| r.summary) {
         Some(s) if !s.walked => Err(verdict_error(&s).into()),
         _ => Ok(ExitCode::SUCCESS),
@@ -109,7 +110,7 @@ fn walk_all(
         check_interrupt()?;
         let run = run_walk(lola, pattern, m, WalkParams::default())?;
         write_csv(&run, &dir.join(format!("{m}.csv")))?;
-        eprintln!("{m}: peak |L_z| {:.3} N m s, peak |tau_z| {:.2} N m, min distance {:.4} m, IK median {:.1} us",
+        errln!("{m}: peak |L_z| {:.3} N m s, peak |tau_z| {:.2} N m, min distance {:.4} m, IK median {:.1} us",
             run.summary.peak_abs_lz, run.summary.peak_abs_tau_z, run.summary.min_distance, run.summary.ik_us_median);
         summary.insert(m.name().to_string(), serde_json::to_value(run.summary)?);
         runs.push(run);
@@ -165,7 +166,7 @@ fn dynamic_walk(
     };
     let run = run_dynamic_walk(&p)?;
     let s = &run.summary;
-    println!(
+    outln!(
         "dynamic ({method}): {} - {:.2} m of {:.2} m planned ({:.0} %), max trunk tilt {:.3} rad, min base height {:.3} m, max tracking error {:.4} rad, peak |tau_z| {:.2} N m, realtime factor {:.2}",
         if s.walked { "walked" } else { "FAILED" },
         s.distance,
@@ -176,7 +177,7 @@ fn dynamic_walk(
         s.max_tracking_error,
         s.peak_abs_tau_z,
         s.realtime_factor
-    );
+    )?;
     write_dynamic(&run, dir)?;
     Ok(run)
 }

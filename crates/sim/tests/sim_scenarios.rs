@@ -193,3 +193,34 @@ fn sway_amplitude_beyond_a_joint_range_is_an_error() {
         assert!(build(ScenarioKind::Sway, &mut lp.plant, &with(bad)).is_err());
     }
 }
+
+/// An unknown sway joint is reported as a sway joint (not as a pose joint, whose errors the
+/// caller attributes to the start pose), whichever of the four it is.
+#[test]
+fn unknown_sway_joint_is_a_sway_joint_error() {
+    use biped_sim::scenario::SwayJoints;
+    use biped_sim::SimError;
+    let mut lp = lola_plant(LolaType::Type2, PlantConfig::default()).unwrap();
+    let good = ScenarioOptions::lola().sway_joints.unwrap();
+    for k in 0..4 {
+        let mut names: Vec<String> = good.hips.iter().chain(&good.ankles).cloned().collect();
+        names[k] = "no_such_joint".into();
+        let opts = ScenarioOptions {
+            sway_joints: Some(SwayJoints {
+                hips: [names[0].clone(), names[1].clone()],
+                ankles: [names[2].clone(), names[3].clone()],
+            }),
+            ..ScenarioOptions::lola()
+        };
+        match build(ScenarioKind::Sway, &mut lp.plant, &opts) {
+            Err(SimError::Unknown { kind, name }) => {
+                assert_eq!(
+                    (kind, name.as_str()),
+                    ("sway joint", "no_such_joint"),
+                    "{k}"
+                )
+            }
+            other => panic!("entry {k}: {other:?}"),
+        }
+    }
+}

@@ -3,6 +3,7 @@
 
 use super::source::{Loaded, ModelSource};
 use super::CliResult;
+use crate::cli::out::{errln, outln};
 use biped_dynamics::dill::{dill, dill_test_state, MAX_DILL_LEVEL};
 use biped_dynamics::{forward_dynamics, nearby_state, on, Algorithm, Data, Model};
 use biped_robots::lola::{self, LolaType};
@@ -207,12 +208,12 @@ pub fn run_one(source: &ModelSource, json: bool) -> CliResult {
     };
     let t = time_model(&model, &q, &v, &tau)?;
     if json {
-        println!("{}", serde_json::to_string(&t)?);
+        outln!("{}", serde_json::to_string(&t)?)?;
     } else {
-        println!("{label}: nv = {}", t.nv);
-        print_table(std::slice::from_ref(&t));
+        outln!("{label}: nv = {}", t.nv)?;
+        print_table(std::slice::from_ref(&t))?;
         if let ModelSource::Lola(kind) = source {
-            print_lola(&model, *kind, &t);
+            print_lola(&model, *kind, &t)?;
         }
     }
     Ok(ExitCode::SUCCESS)
@@ -231,23 +232,25 @@ fn lola_state(kind: LolaType, seed: u64) -> Result<State, Box<dyn std::error::Er
 }
 
 /// The Lola lines of Table 2.6 / Table 2.4: sub-systems, sparsity, relative run times.
-fn print_lola(model: &Model, kind: LolaType, t: &Timings) {
+fn print_lola(model: &Model, kind: LolaType, t: &Timings) -> std::io::Result<()> {
     let s = lola::sparsity(model);
     let thesis = match kind {
         LolaType::Type2 => "0.94-1.16 / 0.90-1.13",
         LolaType::Type3 => "1.41-1.67 / 1.24-1.48",
     };
-    println!(
+    outln!(
         "sub-systems {}, mass-matrix non-zeros {} of {} (alpha {:.3}, Table 2.4)",
         model.subsystems().len(),
         s.nonzero,
         s.dense,
         s.alpha
-    );
-    println!(
+    )?;
+    outln!(
         "eta(O(n^3)) = {:.3}, eta(sparse) = {:.3} (thesis Table 2.6: {thesis})",
-        t.eta_crba, t.eta_sparse
-    );
+        t.eta_crba,
+        t.eta_sparse
+    )?;
+    Ok(())
 }
 
 /// `biped bench dynamics --dill-range A..B`: every level, a table or JSON array, and an SVG plot.
@@ -270,23 +273,30 @@ pub fn run_range(a: u32, b: u32, json: bool) -> CliResult {
     let path = std::path::PathBuf::from(format!("out/dill_fd_runtime_{a}-{b}.svg"));
     super::plot::runtime_svg(&path, &rows)?;
     if json {
-        println!("{}", serde_json::to_string(&rows)?);
+        outln!("{}", serde_json::to_string(&rows)?)?;
     } else {
-        print_table(&rows);
+        print_table(&rows)?;
     }
-    eprintln!("plot: {}", path.display());
+    errln!("plot: {}", path.display());
     Ok(ExitCode::SUCCESS)
 }
 
 /// Human-readable table, times in microseconds.
-fn print_table(rows: &[Timings]) {
-    println!(
+fn print_table(rows: &[Timings]) -> std::io::Result<()> {
+    outln!(
         "{:>4} {:>6} {:>12} {:>12} {:>12} {:>10} {:>10} {:>10}",
-        "n", "nv", "O(n) us", "CRBA us", "sparse us", "FW1 us", "BW us", "FW2 us"
-    );
+        "n",
+        "nv",
+        "O(n) us",
+        "CRBA us",
+        "sparse us",
+        "FW1 us",
+        "BW us",
+        "FW2 us"
+    )?;
     for t in rows {
         let n = t.n.map_or("-".to_string(), |n| n.to_string());
-        println!(
+        outln!(
             "{:>4} {:>6} {:>12.3} {:>12.3} {:>12.3} {:>10.3} {:>10.3} {:>10.3}",
             n,
             t.nv,
@@ -296,6 +306,7 @@ fn print_table(rows: &[Timings]) {
             t.fw1 / 1e3,
             t.bw / 1e3,
             t.fw2 / 1e3
-        );
+        )?;
     }
+    Ok(())
 }

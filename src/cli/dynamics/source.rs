@@ -1,6 +1,7 @@
 //! Where a model comes from (`--urdf`, `--dill`, `--lola`): one enum, one loader, one JSON
 //! description.
 
+use crate::cli::out::errln;
 use biped_dynamics::urdf::{load_file, UrdfOptions};
 use biped_dynamics::Model;
 use biped_robots::lola::{self, LolaType};
@@ -15,13 +16,13 @@ pub struct SourceArgs {
     #[arg(long, value_name = "FILE")]
     urdf: Option<PathBuf>,
     /// Give the URDF root link a free-flyer joint named "root" (q: xyz + quaternion xyzw).
-    #[arg(long, requires = "urdf")]
+    #[arg(long)]
     floating: bool,
     /// Reject URDF `<mimic>` joints instead of ignoring them with a warning.
-    #[arg(long, requires = "urdf")]
+    #[arg(long)]
     reject_mimic: bool,
     /// Use Featherstone's Dill(N) benchmark tree (2^N revolute bodies, thesis 2.10.1).
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
     dill: Option<u32>,
     /// Use the Lola-like biped (thesis Table 2.3): `type2` rigid drives, `type3` elastic gears.
     #[arg(long, value_name = "TYPE", group = "source")]
@@ -47,8 +48,24 @@ pub struct Loaded {
 }
 
 impl SourceArgs {
+    /// Rejects the URDF import options without `--urdf` (they would be ignored).
+    pub fn check_urdf_only(&self) -> Result<(), String> {
+        if self.urdf.is_some() {
+            return Ok(());
+        }
+        let given = [
+            ("--floating", self.floating),
+            ("--reject-mimic", self.reject_mimic),
+        ];
+        match given.iter().find(|(_, on)| *on) {
+            Some((option, _)) => Err(format!("{option}: only applies with --urdf FILE")),
+            None => Ok(()),
+        }
+    }
+
     /// The selected source (clap guarantees at most one; none is an error).
     pub fn to_source(&self) -> Result<ModelSource, String> {
+        self.check_urdf_only()?;
         match (&self.urdf, self.dill, self.lola) {
             (Some(path), None, None) => Ok(ModelSource::Urdf(
                 path.clone(),
@@ -56,6 +73,10 @@ impl SourceArgs {
                     floating: self.floating,
                     reject_mimic: self.reject_mimic,
                 },
+            )),
+            (None, Some(n), None) if n > biped_dynamics::dill::MAX_DILL_LEVEL => Err(format!(
+                "--dill: level {n} is too large (at most {} is supported)",
+                biped_dynamics::dill::MAX_DILL_LEVEL
             )),
             (None, Some(n), None) => Ok(ModelSource::Dill(n)),
             (None, None, Some(t)) => Ok(ModelSource::Lola(t)),
@@ -73,7 +94,7 @@ impl ModelSource {
             ModelSource::Urdf(path, options) => {
                 let imported = load_file(path, options)?;
                 for w in &imported.warnings {
-                    eprintln!("warning: {w}");
+                    errln!("warning: {w}");
                 }
                 Loaded {
                     model: imported.model,

@@ -1,8 +1,10 @@
 //! The simulated robot: the Lola-like biped (`--lola`) or a floating-base URDF robot
 //! (`--urdf --floating --feet ...`), as a plant with its scenario options and default step.
 
-use super::parse::{names, numbers, parse_armature};
+use super::parse::{names, parse_armature};
 use super::SimulateArgs;
+use crate::cli::out::errln;
+use crate::cli::range::simulate::{CONTACT, FRICTION, SOLE_CENTER, SOLE_SIZE};
 use biped_dynamics::urdf::srdf::{load_srdf_file, Srdf};
 use biped_robots::lola::LolaType;
 use biped_sim::contact::ContactParams;
@@ -128,7 +130,7 @@ fn warn_unused_rotors(file: &str, s: &Srdf, plant: &Plant, urdf: &Path) {
         .filter(|r| !moves(plant, &r.joint))
         .collect();
     if let Some(first) = unused.first() {
-        eprintln!(
+        errln!(
             "warning: {file}:{}: {} rotor_params entries name joints that {} does not move \
              (first `{}`); skipped",
             first.line,
@@ -169,7 +171,7 @@ fn srdf_pose(
         }
     }
     if let Some(first) = unknown.first() {
-        eprintln!(
+        errln!(
             "warning: {file}:{}: group_state `{name}` sets {} joints the URDF does not move \
              (first `{first}`); skipped",
             state.line,
@@ -204,25 +206,21 @@ fn urdf_feet(a: &SimulateArgs) -> Result<UrdfFeet, String> {
     let links = names(text, 2, "--feet", "LEFT,RIGHT")?;
     let mut feet = UrdfFeet::new(&links[0], &links[1]);
     if let Some(text) = &a.sole_center {
-        let c = numbers(text, 3, "--sole-center")?;
-        feet.center = Vector3::new(c[0], c[1], c[2]);
+        feet.center = Vector3::from(SOLE_CENTER.parse(text)?);
     }
     if let Some(text) = &a.sole_size {
-        let s = numbers(text, 2, "--sole-size")?;
-        if s.iter().any(|x| *x <= 0.0) {
-            return Err(format!(
-                "--sole-size: length and width must be > 0, got {text}"
-            ));
-        }
-        (feet.length, feet.width) = (s[0], s[1]);
+        [feet.length, feet.width] = SOLE_SIZE.parse(text)?;
     }
     Ok(feet)
 }
 
-/// Sway joints from `--sway-joints` (required by `sway` on a URDF robot).
+/// Sway joints from `--sway-joints` (required by `sway` on a URDF robot, and only for it).
 fn sway_joints(a: &SimulateArgs, kind: ScenarioKind) -> Result<Option<SwayJoints>, String> {
     const SHAPE: &str = "HIP_L,HIP_R,ANKLE_L,ANKLE_R";
     match &a.sway_joints {
+        Some(_) if kind != ScenarioKind::Sway => {
+            Err("--sway-joints: only applies with --scenario sway".into())
+        }
         Some(text) => {
             let j = names(text, 4, "--sway-joints", SHAPE)?;
             Ok(Some(SwayJoints {
@@ -241,21 +239,13 @@ fn sway_joints(a: &SimulateArgs, kind: ScenarioKind) -> Result<Option<SwayJoints
 fn plant_config(a: &SimulateArgs, base: ContactParams) -> Result<PlantConfig, SetupError> {
     let contact = match &a.contact {
         Some(text) => {
-            let v = numbers(text, 2, "--contact")?;
-            if v[0] <= 0.0 || v[1] < 0.0 {
-                return Err(
-                    format!("--contact: need stiffness > 0 and damping >= 0, got {text}").into(),
-                );
-            }
-            base.with_spring_damper(v[0], v[1])
+            let [k, d] = CONTACT.parse(text)?;
+            base.with_spring_damper(k, d)
         }
         None => base,
     };
     let friction = match &a.friction {
-        Some(text) => match text.trim().parse::<f64>() {
-            Ok(mu) if mu.is_finite() && mu >= 0.0 => mu,
-            _ => return Err(format!("--friction: need a finite mu >= 0, got \"{text}\"").into()),
-        },
+        Some(text) => FRICTION.parse(text)?,
         None => contact.friction,
     };
     Ok(PlantConfig {

@@ -1,71 +1,55 @@
-//! Parsers of the option values of `biped simulate`; every error names the option.
+//! Parsers of the non-numeric and named-value options of `biped simulate`; every error names
+//! the option. Plain numbers and number lists are checked by [`crate::cli::range`].
 
-/// A finite number > 0.
-pub fn positive(option: &str, text: &str) -> Result<f64, String> {
-    match text.trim().parse::<f64>() {
-        Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
-        Ok(x) => Err(format!("{option}: must be finite and > 0, got {x}")),
-        Err(e) => Err(format!("{option}: \"{text}\" is not a number ({e})")),
-    }
-}
+use crate::cli::range::simulate::{ARMATURE, POSE_ANGLE};
+use crate::cli::range::Quantity;
 
-/// A whole number >= 1.
-pub fn count(option: &str, text: &str) -> Result<u64, String> {
-    match text.trim().parse::<u64>() {
-        Ok(n) if n >= 1 => Ok(n),
-        _ => Err(format!(
-            "{option}: expected a whole number >= 1, got \"{text}\""
-        )),
-    }
-}
-
-/// Exactly `n` comma-separated finite numbers.
-pub fn numbers(text: &str, n: usize, option: &str) -> Result<Vec<f64>, String> {
-    let parsed: Result<Vec<f64>, _> = text.split(',').map(|s| s.trim().parse::<f64>()).collect();
-    match parsed {
-        Ok(v) if v.len() == n && v.iter().all(|x| x.is_finite()) => Ok(v),
-        _ => Err(format!(
-            "{option}: expected {n} comma-separated finite numbers, got \"{text}\""
-        )),
-    }
-}
-
-/// Exactly `n` comma-separated non-empty names.
+/// Exactly `n` comma-separated, non-empty and distinct names.
 pub fn names(text: &str, n: usize, option: &str, shape: &str) -> Result<Vec<String>, String> {
     let v: Vec<String> = text.split(',').map(|s| s.trim().to_string()).collect();
     if v.len() != n || v.iter().any(String::is_empty) {
         return Err(format!("{option}: expected {shape}, got \"{text}\""));
+    }
+    if let Some((k, name)) = v.iter().enumerate().find(|(k, x)| v[..*k].contains(x)) {
+        let first = v.iter().position(|x| x == name).unwrap_or(k);
+        return Err(format!(
+            "{option}: `{name}` is given twice (entries {} and {} of {shape}), each must be a \
+             different one",
+            first + 1,
+            k + 1
+        ));
     }
     Ok(v)
 }
 
 /// `JOINT=ANGLE` pairs separated by commas.
 pub fn parse_pose(text: &str) -> Result<Vec<(String, f64)>, String> {
-    named_values(text, "--pose", "JOINT=ANGLE", "angle")
+    named_values(text, "JOINT=ANGLE", &POSE_ANGLE)
 }
 
 /// `PATTERN=KG_M2` pairs separated by commas (reflected rotor inertias of URDF joints).
 pub fn parse_armature(text: &str) -> Result<Vec<(String, f64)>, String> {
-    named_values(text, "--armature", "JOINT=KG_M2", "inertia")
+    named_values(text, "JOINT=KG_M2", &ARMATURE)
 }
 
-/// `NAME=VALUE` pairs separated by commas, each value a finite number (`quantity` in errors).
-fn named_values(
-    text: &str,
-    option: &str,
-    shape: &str,
-    quantity: &str,
-) -> Result<Vec<(String, f64)>, String> {
+/// `NAME=VALUE` pairs separated by commas, each value a number in the range of `q`.
+fn named_values(text: &str, shape: &str, q: &Quantity) -> Result<Vec<(String, f64)>, String> {
     text.split(',')
         .map(|item| {
-            let bad =
-                || format!("{option}: expected {shape} with a finite {quantity}, got \"{item}\"");
+            let bad = || {
+                format!(
+                    "{}: expected {shape} with a finite {}, got \"{item}\"",
+                    q.flag, q.name
+                )
+            };
             let (name, value) = item.split_once('=').ok_or_else(bad)?;
             let value: f64 = value.trim().parse().map_err(|_| bad())?;
-            if name.trim().is_empty() || !value.is_finite() {
+            let name = name.trim();
+            if name.is_empty() || !value.is_finite() {
                 return Err(bad());
             }
-            Ok((name.trim().to_string(), value))
+            q.check_as(&format!("`{name}`"), value)?;
+            Ok((name.to_string(), value))
         })
         .collect()
 }
@@ -76,20 +60,16 @@ mod tests {
 
     #[test]
     fn option_values() {
-        assert_eq!(positive("--x", " 2.5 "), Ok(2.5));
-        assert!(positive("--x", "0").is_err() && positive("--x", "nan").is_err());
-        assert_eq!(count("--n", "12"), Ok(12));
-        assert!(count("--n", "0").is_err() && count("--n", "-1").is_err());
-        assert_eq!(numbers("1, -2,3e-1", 3, "--v"), Ok(vec![1.0, -2.0, 0.3]));
-        assert!(numbers("1,2", 3, "--v")
-            .unwrap_err()
-            .starts_with("--v: expected 3"));
-        assert!(numbers("1,inf", 2, "--v").is_err());
         assert_eq!(
             names("a, b", 2, "--n", "A,B"),
             Ok(vec!["a".into(), "b".into()])
         );
         assert!(names("a,", 2, "--n", "A,B").is_err());
+        let e = names("l,l", 2, "--feet", "LEFT,RIGHT").unwrap_err();
+        assert!(
+            e.starts_with("--feet: `l` is given twice (entries 1 and 2"),
+            "{e}"
+        );
         let pose = parse_pose("knee=0.4, hip = -0.2").unwrap();
         assert_eq!(pose, vec![("knee".into(), 0.4), ("hip".into(), -0.2)]);
         let arm = parse_armature("*_knee_joint=0.025").unwrap();
@@ -97,6 +77,16 @@ mod tests {
         assert!(parse_armature("*_knee_joint")
             .unwrap_err()
             .starts_with("--armature: expected JOINT=KG_M2"));
+        let e = parse_armature("*_knee_joint=-0.02").unwrap_err();
+        assert!(
+            e.starts_with("--armature: `*_knee_joint` -0.02 kg m^2 is out of range"),
+            "{e}"
+        );
+        let e = parse_pose("knee=100").unwrap_err();
+        assert!(
+            e.starts_with("--pose: `knee` 100 rad is out of range"),
+            "{e}"
+        );
         for bad in ["knee", "=1", "knee=x", "knee=inf", ""] {
             assert!(parse_pose(bad).is_err(), "{bad}");
         }

@@ -1,7 +1,9 @@
 //! One updating progress line on stderr (percent of simulated time, realtime factor), shown
-//! only when stderr is a terminal and the run is projected to take more than a second.
+//! only when stderr is a terminal and the run is projected to take more than a second. Written
+//! best effort: a closed stderr does not stop the run.
 
-use std::io::{IsTerminal, Write};
+use crate::cli::out;
+use std::io::IsTerminal;
 use std::time::{Duration, Instant};
 
 /// Wall time before the first projection of the run time.
@@ -50,15 +52,14 @@ impl Progress {
                 100.0 * fraction,
                 self.duration
             );
-            let mut err = std::io::stderr().lock();
-            let _ = err.write_all(line.as_bytes()).and_then(|_| err.flush());
+            out::progress(&line);
         }
     }
 
     /// Erases the line if it was drawn.
     pub fn finish(&mut self) {
         if self.last_draw.take().is_some() {
-            eprint!("\r{:70}\r", "");
+            out::progress(&format!("\r{:70}\r", ""));
         }
     }
 }

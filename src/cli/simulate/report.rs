@@ -2,6 +2,7 @@
 //! stdout.
 
 use super::setup::{Info, StepRule};
+use crate::cli::out::outln;
 use biped_sim::controller::{Controller, JointPd, StanceDamping};
 use biped_sim::plant::Plant;
 use biped_sim::record::Recorder;
@@ -99,44 +100,55 @@ pub fn print_report(
     pd: &JointPd,
     dir: &Path,
     files: &[String],
-) {
+) -> std::io::Result<()> {
     let step = match info.step {
         StepRule::Fixed(h) => format!("h = {h} s"),
         StepRule::Adaptive(r, a) => format!("rtol {r:e}, atol {a:e}"),
     };
-    println!(
+    outln!(
         "{} on {}, {} ({step})",
-        info.scenario, info.model, info.method
-    );
-    println!(
+        info.scenario,
+        info.model,
+        info.method
+    )?;
+    outln!(
         "  {:.3} s simulated in {:.3} s: realtime factor {:.3}; {} steps, {} rhs evaluations",
-        s.sim_time, s.wall_time, s.realtime_factor, s.steps, s.rhs_evaluations
-    );
+        s.sim_time,
+        s.wall_time,
+        s.realtime_factor,
+        s.steps,
+        s.rhs_evaluations
+    )?;
     if let Some(z) = final_base_height(rec, plant) {
-        println!(
+        outln!(
             "  final base height {z:.4} m, CoM height {:.4} m",
             s.final_com[2]
-        );
+        )?;
     }
-    println!(
+    outln!(
         "  contact force: final {:.1} N, max {:.1} N (weight {:.1} N)",
-        s.final_contact_force, s.max_contact_force, s.weight
-    );
+        s.final_contact_force,
+        s.max_contact_force,
+        s.weight
+    )?;
     let p = &s.passive;
     if let Some(f) = &p.fastest {
-        println!(
+        outln!(
             "  joint layer: {} end stops, {} damping/friction laws (fastest: {} of `{}`, {:.3e} 1/s)",
             p.end_stops, p.friction_laws, f.law, f.joint, f.rate
-        );
+        )?;
     }
     if let Some(d) = pd.stance_damping() {
-        println!("  {}", stance_line(d));
+        outln!("  {}", stance_line(d))?;
     }
     if let Some(m) = &s.drive_limits.most {
-        println!(
+        outln!(
             "  drive limits cut commands in {} of {} control cycles (most often `{}`: {})",
-            s.drive_limits.cycles, s.control_cycles, m.joint, m.cycles
-        );
+            s.drive_limits.cycles,
+            s.control_cycles,
+            m.joint,
+            m.cycles
+        )?;
     }
     for c in &s.checks {
         let verdict = if c.passed { "ok" } else { "FAILED" };
@@ -144,18 +156,20 @@ pub fn print_report(
             (Some(j), true) => format!(", fastest `{j}`"),
             _ => String::new(),
         };
-        println!(
+        outln!(
             "  {verdict:>6}: {} {:.3e} (limit {:.3e}){at}",
-            c.name, c.value, c.limit
-        );
+            c.name,
+            c.value,
+            c.limit
+        )?;
     }
     if let Some(h) = rest_hint(s, plant, pd) {
-        println!("  hint: {h}");
+        outln!("  hint: {h}")?;
     }
     let failed = s.checks.iter().filter(|c| !c.passed).count();
     match failed {
-        0 => println!("  pass criteria: all {} hold", s.checks.len()),
-        n => println!("  pass criteria: {n} of {} FAILED", s.checks.len()),
+        0 => outln!("  pass criteria: all {} hold", s.checks.len())?,
+        n => outln!("  pass criteria: {n} of {} FAILED", s.checks.len())?,
     }
-    println!("wrote {}: {}", dir.display(), files.join(", "));
+    outln!("wrote {}: {}", dir.display(), files.join(", "))
 }

@@ -2,13 +2,15 @@
 //! the integrator. Every input error names the option it comes from.
 
 use super::model::{lola_source, urdf_only, urdf_source};
-use super::parse::{count, numbers, parse_pose, positive};
+use super::parse::parse_pose;
+use super::recording::Recording;
 use super::SimulateArgs;
+use crate::cli::range::simulate::{BANDWIDTH, DURATION, EVERY, STEP, SWAY, TOLERANCES};
 use biped_sim::controller::JointPd;
 use biped_sim::ode::{Method, Settings};
 use biped_sim::plant::Plant;
 use biped_sim::scenario::{build, Scenario, ScenarioKind};
-use biped_sim::simulation::{Frame, Simulation, Summary};
+use biped_sim::simulation::{Frame, Signals, Simulation, Summary};
 use biped_sim::SimError;
 
 /// Error of this module: one line naming the option.
@@ -51,27 +53,6 @@ pub struct Job {
     every: u64,
 }
 
-/// Which control periods are recorded: every `every`-th and the last.
-#[derive(Debug, Clone, Copy)]
-pub struct Recording {
-    period: f64,
-    every: u64,
-    cycles: u64,
-}
-
-impl Recording {
-    /// Whether the frame at time `t` is recorded.
-    pub fn at(&self, t: f64) -> bool {
-        let k = (t / self.period).round() as u64;
-        k.checked_rem(self.every) == Some(0) || k >= self.cycles
-    }
-
-    /// Number of recorded rows.
-    pub fn rows(&self) -> u64 {
-        self.cycles / self.every + 1 + u64::from(self.cycles.checked_rem(self.every) != Some(0))
-    }
-}
-
 impl Job {
     /// Parses and validates every option, builds the plant and the scenario.
     pub fn from_args(a: &SimulateArgs) -> Result<Self, SetupError> {
@@ -80,10 +61,6 @@ impl Job {
             .integrator
             .parse()
             .map_err(|e| format!("--integrator: {e}"))?;
-        let duration = match &a.duration {
-            Some(text) => Some(positive("--duration", text)?),
-            None => None,
-        };
         let pose = match &a.pose {
             Some(text) => parse_pose(text)?,
             None => Vec::new(),
@@ -96,39 +73,38 @@ impl Job {
             }
         };
         merge_pose(&mut options.pose, pose);
-        if let Some(d) = duration.filter(|d| *d < 0.5 * options.period) {
-            let p = options.period;
-            let why = format!("--duration: {d} s is shorter than one control period ({p} s)");
-            return Err(why.into());
+        let period = options.period;
+        if let Some(text) = &a.duration {
+            let at_least = DURATION.at_least(period, "at least one control period");
+            options.duration = Some(at_least.parse(text)?);
         }
-        options.duration = duration;
         if let Some(text) = &a.bandwidth {
-            options.bandwidth = positive("--bandwidth", text)?;
+            options.bandwidth = BANDWIDTH.parse(text)?;
         }
         options.stance_damping = !a.no_stance_damping;
         if let Some(text) = &a.sway {
             [options.sway_amplitude, options.sway_period] = sway_motion(text, kind)?;
         }
-        let (settings, step) = integrator_settings(a, method, default_step)?;
-        let every = count("--every", &a.every)?;
-        let scenario = build(kind, &mut plant, &options).map_err(|e| match e {
-            SimError::Unknown { kind: "joint", .. } => format!("--pose: {e}"),
-            e => format!("scenario {}: {e}", name(kind)),
-        })?;
+        let (settings, step) = integrator_settings(a, method, default_step, period)?;
+        let every = EVERY.parse_whole(&a.every)?;
+        let scenario = build(kind, &mut plant, &options).map_err(|e| scenario_error(kind, e))?;
         let info = Info {
             model: label,
             scenario: name(kind),
             method,
             step,
         };
-        Ok(Self {
+        let job = Self {
             plant,
             scenario,
             kind,
             settings,
             info,
             every,
-        })
+        };
+        let columns = Signals::new(&job.plant, true).names().len() as u64;
+        job.recording().check_size(columns, job.scenario.duration)?;
+        Ok(job)
     }
 
     /// Scenario name (`stand`, `drop`, `sway`).
@@ -143,12 +119,7 @@ impl Job {
 
     /// The recorded control periods.
     pub fn recording(&self) -> Recording {
-        let cycles = (self.scenario.duration / self.scenario.period()).round() as u64;
-        Recording {
-            period: self.scenario.period(),
-            every: self.every,
-            cycles,
-        }
+        Recording::new(self.scenario.duration, self.scenario.period(), self.every)
     }
 
     /// Rows the recorder should reserve.
@@ -178,16 +149,29 @@ fn merge_pose(pose: &mut Vec<(String, f64)>, given: Vec<(String, f64)>) {
     }
 }
 
-/// `--sway AMPLITUDE,PERIOD`: both finite and > 0, and only with `--scenario sway`.
+/// `--sway AMPLITUDE,PERIOD`, only with `--scenario sway`.
 fn sway_motion(text: &str, kind: ScenarioKind) -> Result<[f64; 2], String> {
     if kind != ScenarioKind::Sway {
         return Err("--sway: only applies with --scenario sway".into());
     }
-    match numbers(text, 2, "--sway")?[..] {
-        [a, t] if a > 0.0 && t > 0.0 => Ok([a, t]),
-        _ => Err(format!(
-            "--sway: need amplitude > 0 rad and period > 0 s, got \"{text}\""
-        )),
+    SWAY.parse(text)
+}
+
+/// The scenario builder's error `e`, attributed to the option it comes from: the start pose,
+/// the sway joints or the sway motion, else the scenario.
+fn scenario_error(kind: ScenarioKind, e: SimError) -> String {
+    let option = match &e {
+        SimError::Unknown { kind: "joint", .. } => Some("--pose"),
+        SimError::Unknown {
+            kind: "sway joint", ..
+        } => Some("--sway-joints"),
+        SimError::InvalidParameter { what, .. } if what.starts_with("pose ") => Some("--pose"),
+        SimError::InvalidParameter { what, .. } if what.starts_with("sway") => Some("--sway"),
+        _ => None,
+    };
+    match option {
+        Some(option) => format!("{option}: {e}"),
+        None => format!("scenario {}: {e}", name(kind)),
     }
 }
 
@@ -200,11 +184,14 @@ fn name(kind: ScenarioKind) -> &'static str {
     }
 }
 
-/// Integrator settings and the step rule from `--step` / `--tolerances`.
+/// Integrator settings and the step rule from `--step` / `--tolerances`. A fixed step is at
+/// most the control `period`, and the simulation takes a whole number of equal steps per
+/// period: the step rule is that step, `period / ceil(period / h)`.
 fn integrator_settings(
     a: &SimulateArgs,
     method: Method,
     default_step: f64,
+    period: f64,
 ) -> Result<(Settings, StepRule), SetupError> {
     if method.is_fixed_step() {
         if a.tolerances.is_some() {
@@ -213,44 +200,24 @@ fn integrator_settings(
             );
         }
         let h = match &a.step {
-            Some(text) => positive("--step", text)?,
+            Some(text) => STEP
+                .at_most(period, "at most the control period")
+                .parse(text)?,
             None => default_step,
         };
-        Ok((Settings::fixed(h), StepRule::Fixed(h)))
+        let taken = period / (period / h).ceil();
+        Ok((Settings::fixed(h), StepRule::Fixed(taken)))
     } else {
         if a.step.is_some() {
             return Err("--step: dopri5 chooses its own steps, use --tolerances RTOL,ATOL".into());
         }
         let d = Settings::default();
-        let (rtol, atol) = match &a.tolerances {
-            Some(text) => {
-                let t = numbers(text, 2, "--tolerances")?;
-                (t[0], t[1])
-            }
-            None => (d.rtol, d.atol),
+        let [rtol, atol] = match &a.tolerances {
+            Some(text) => TOLERANCES.parse(text)?,
+            None => [d.rtol, d.atol],
         };
         let s = Settings::tolerances(rtol, atol);
         s.validate().map_err(|e| format!("--tolerances: {e}"))?;
         Ok((s, StepRule::Adaptive(rtol, atol)))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::Recording;
-
-    /// `rows()` counts what `at()` selects, over the control times of a run.
-    #[test]
-    fn recorded_rows_match_the_selection() {
-        for (cycles, every) in [(200, 1), (200, 10), (205, 10), (7, 3), (3, 5), (1, 1)] {
-            let r = Recording {
-                period: 1e-3,
-                every,
-                cycles,
-            };
-            let selected = (0..=cycles).filter(|k| r.at(*k as f64 * 1e-3)).count() as u64;
-            assert_eq!(selected, r.rows(), "{cycles} cycles, every {every}");
-            assert!(r.at(0.0) && r.at(cycles as f64 * 1e-3), "first and last");
-        }
     }
 }

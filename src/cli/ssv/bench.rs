@@ -1,5 +1,6 @@
 //! `biped ssv bench`: median time of the six distance functions (thesis Table 6.9).
 
+use crate::cli::out::outln;
 use crate::cli::CliResult;
 use biped_ssv::distance::{ll, lt, pl, pp, pt, tt};
 use biped_ssv::{DistanceResult, Lss, Pss, Tss};
@@ -89,17 +90,20 @@ pub fn run(json: bool) -> CliResult {
             .iter()
             .map(|(name, ns)| (name.to_string(), serde_json::json!(ns)))
             .collect();
-        println!("{}", serde_json::Value::Object(obj));
+        outln!("{}", serde_json::Value::Object(obj))?;
         return Ok(ExitCode::SUCCESS);
     }
     let pp_ns = rows[0].1;
-    println!("SSV distance functions: median over {BATCHES} batches of {POOL} random queries");
-    println!(
+    outln!("SSV distance functions: median over {BATCHES} batches of {POOL} random queries")?;
+    outln!(
         "{:<6} {:>12} {:>10} {:>16}",
-        "func", "abs [ns]", "rel [-]", "thesis rel [-]"
-    );
+        "func",
+        "abs [ns]",
+        "rel [-]",
+        "thesis rel [-]"
+    )?;
     for ((name, ns), (_, thesis)) in rows.iter().zip(THESIS_REL) {
-        println!("{name:<6} {ns:>12.1} {:>10.2} {thesis:>16.2}", ns / pp_ns);
+        outln!("{name:<6} {ns:>12.1} {:>10.2} {thesis:>16.2}", ns / pp_ns)?;
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -1,5 +1,6 @@
 //! `biped ssv model FILE --pose NAME`: segment-pair distances of a collision model (6.6-6.8).
 
+use crate::cli::out::outln;
 use crate::cli::CliResult;
 use biped_ssv::format;
 use biped_ssv::{CollisionModel, PairDistance, PairQuery};
@@ -79,26 +80,28 @@ pub fn run(args: ModelArgs) -> CliResult {
     if args.json {
         let json = serde_json::json!({ "pose": name, "activation_distance":
             model.activation_distance(), "pairs": rows });
-        println!("{json}");
+        outln!("{json}")?;
         return Ok(ExitCode::SUCCESS);
     }
-    println!(
+    outln!(
         "{file}, pose {name}, d_a = {} m",
         model.activation_distance()
-    );
+    )?;
     for row in &rows {
         let d = row
             .distance
             .map_or_else(|| "beyond d_a".to_string(), |d| format!("{d:.6} m"));
-        println!("{:>20} - {:<20} {d}", row.a, row.b);
+        outln!("{:>20} - {:<20} {d}", row.a, row.b)?;
     }
     if let Some((pair, closest)) = model.min_distance() {
         let p = model.pairs()[pair];
         let names = (model.segments()[p.a].name(), model.segments()[p.b].name());
-        println!(
+        outln!(
             "closest pair: {} - {} at {:.6} m",
-            names.0, names.1, closest.result.distance
-        );
+            names.0,
+            names.1,
+            closest.result.distance
+        )?;
     }
     Ok(ExitCode::SUCCESS)
 }

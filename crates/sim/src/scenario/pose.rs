@@ -48,6 +48,15 @@ fn joint_body(plant: &Plant, joint: &str) -> Result<BodyId, SimError> {
         })
 }
 
+/// Body whose joint is the sway joint `joint` (an unknown name is an unknown "sway joint",
+/// not a pose joint).
+fn sway_joint_body(plant: &Plant, joint: &str) -> Result<BodyId, SimError> {
+    joint_body(plant, joint).map_err(|_| SimError::Unknown {
+        kind: "sway joint",
+        name: joint.to_string(),
+    })
+}
+
 /// Neutral configuration with the named one-DoF joint angles set and Type 3 motors at
 /// `N q_link` (unloaded gears); every joint with end stops must start inside its range.
 pub(super) fn configuration(
@@ -104,7 +113,8 @@ pub(super) fn sway_within_stops(
     joints: &SwayJoints,
     amplitude: f64,
 ) -> Result<(), SimError> {
-    let index = |name: &str| joint_body(plant, name).map(|b| plant.model().bodies()[b].q_index());
+    let index =
+        |name: &str| sway_joint_body(plant, name).map(|b| plant.model().bodies()[b].q_index());
     let hips = [index(&joints.hips[0])?, index(&joints.hips[1])?];
     let ankles = [index(&joints.ankles[0])?, index(&joints.ankles[1])?];
     for sign in [1.0, -1.0] {
@@ -167,8 +177,8 @@ pub(super) fn leg_length(
     j: &SwayJoints,
 ) -> Result<f64, SimError> {
     let (hip, ankle) = (
-        joint_body(plant, &j.hips[0])?,
-        joint_body(plant, &j.ankles[0])?,
+        sway_joint_body(plant, &j.hips[0])?,
+        sway_joint_body(plant, &j.ankles[0])?,
     );
     let (model, data) = plant.model_and_data();
     update_placements(model, data, q)?;
