@@ -72,7 +72,10 @@ impl OutputDir {
         let lock_path = parent.join(format!(".{name}.lock"));
         let lock = File::create(&lock_path).map_err(|e| {
             let lock = lock_path.display();
-            format!("{option} {}: cannot create its lock file {lock}: {e}", target.display())
+            format!(
+                "{option} {}: cannot create its lock file {lock}: {e}",
+                target.display()
+            )
         })?;
         match lock.try_lock() {
             Ok(()) => {}
