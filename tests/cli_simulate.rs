@@ -121,7 +121,7 @@ fn short_stand_writes_csv_plots_and_a_consistent_summary() {
         assert!((l[k] + r[k] - total[k]).abs() < 1e-9 * weight);
     }
     assert!((total[200] - fz).abs() < 1e-9 * weight, "CSV end = summary");
-    let base = column(&table, "q[2]");
+    let base = column(&table, "q[root.z]");
     assert!((base[200] - num(&s, "final_base_height")).abs() < 1e-15);
     let com = column(&table, "com.z");
     assert!((com[200] - num(&s, "final_com_height")).abs() < 1e-12);
@@ -154,7 +154,7 @@ fn short_stand_writes_csv_plots_and_a_consistent_summary() {
 fn drop_lands_and_sway_runs() {
     let (out, dir) = simulate("drop", &["--scenario", "drop", "--duration", "0.3"]);
     let s = summary(&out, &dir);
-    let base = column(&csv(&dir), "q[2]");
+    let base = column(&csv(&dir), "q[root.z]");
     assert!(
         base[0] - base[base.len() - 1] > 0.04,
         "fell about 5 cm: {base:?}"
@@ -321,7 +321,7 @@ fn urdf_robot_stands_on_its_soles() {
         "the soles carry the robot without bouncing: {fz:?}"
     );
     assert!((fz[fz.len() - 1] - w).abs() < 0.05 * w);
-    let knee = column(&table, "q[10]");
+    let knee = column(&table, "q[left_knee_joint]");
     assert!(
         knee.iter().all(|q| (q - 0.4).abs() < 0.05),
         "knee held: {knee:?}"
@@ -449,7 +449,7 @@ fn chosen_signals_are_plotted() {
         "--duration",
         "0.05",
         "--plot",
-        "q[10],com.z",
+        "q[l_shank],com.z",
         "--plot",
         "left.f*,left.fz",
     ];
@@ -457,7 +457,7 @@ fn chosen_signals_are_plotted() {
     let s = summary(&out, &dir);
     let files = s["files"].as_array().unwrap();
     for (k, labels, absent) in [
-        (1, &["q[10]", "com.z"][..], "left.fx"),
+        (1, &["q[l_shank]", "com.z"][..], "left.fx"),
         (2, &["left.fx", "left.fy", "left.fz"][..], "left.tx"),
     ] {
         let file = format!("plot_{k}.svg");

@@ -92,7 +92,7 @@ fn parse_range(text: &str) -> Result<(u32, u32), String> {
     let max = biped_dynamics::dill::MAX_DILL_LEVEL;
     if b > max {
         return Err(format!(
-            "level {b} is too large (at most {max} is supported)"
+            "level {b} is too large (valid levels are 0..{max})"
         ));
     }
     Ok((a, b))

@@ -117,7 +117,7 @@ pub struct SimulateArgs {
     )]
     every: String,
     /// Also plot the chosen signals: `signals.csv` column names or `*` patterns, comma-separated
-    /// (e.g. `q[10],left.f*`); each `--plot` writes one `plot_<k>.svg`.
+    /// (e.g. `q[l_shank],left.f*`); each `--plot` writes one `plot_<k>.svg`.
     #[arg(long, value_name = "SIGNALS", action = clap::ArgAction::Append)]
     plot: Vec<String>,
     /// Output folder (default `out/simulate/<scenario>`).

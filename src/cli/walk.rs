@@ -5,7 +5,7 @@
 
 use super::outdir::{self, OutputDir, Status};
 use super::{interrupt, range, CliResult};
-use crate::cli::out::{errln, outln};
+use crate::cli::out::outln;
 use biped_control::pattern::WalkingPattern;
 use biped_control::walk::run::RECORDED_JOINTS;
 use biped_control::walk::{
@@ -18,6 +18,8 @@ use clap::Args;
 use serde_json::{Map, Value};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+
+mod report;
 
 /// Arguments of `biped walk`; the numbers are checked against [`range::walk`] while parsing.
 #[derive(Args)]
@@ -65,8 +67,9 @@ pub fn run(args: WalkArgs) -> CliResult {
     let pattern = WalkingPattern::generate(&params)?;
     let out = OutputDir::create(&args.out, "--out")?;
     let mut summary = Map::new();
-    let dynamic = match walk_all(&args, &lola, &pattern, &methods, out.path(), &mut summary) {
-        Ok(dynamic) => dynamic,
+    let (runs, dynamic) = match walk_all(&args, &lola, &pattern, &methods, out.path(), &mut summary)
+    {
+        Ok(done) => done,
         Err(e) => {
             let status = match interrupt::requested() {
                 true => Status::Interrupted,
@@ -80,8 +83,9 @@ pub fn run(args: WalkArgs) -> CliResult {
     outdir::stamp(&mut summary, Status::Completed);
     outdir::write_json(&out.path().join("summary.json"), &Value::Object(summary))?;
     out.commit()?;
+    report::print(&args, &lola, &runs, dynamic.as_ref())?;
     outln!("wrote {}", args.out.display())?;
-    match dynamic.map(|r| r.summary) {
+    match dynamic.map(|(_, r)| r.summary) {
         Some(s) if !s.walked => Err(verdict_error(&s).into()),
         _ => Ok(ExitCode::SUCCESS),
     }
@@ -95,6 +99,9 @@ fn check_interrupt() -> Result<(), Box<dyn std::error::Error>> {
     }
 }
 
+/// What [`walk_all`] returns: the kinematic walks and the dynamic one, if asked for.
+type Walks = (Vec<WalkRun>, Option<(Method, DynamicWalkRun)>);
+
 /// Walks every method (then the dynamic walk if asked), writing into `dir` and adding each
 /// part's summary to `summary` as it finishes.
 fn walk_all(
@@ -104,20 +111,24 @@ fn walk_all(
     methods: &[Method],
     dir: &Path,
     summary: &mut Map<String, Value>,
-) -> Result<Option<DynamicWalkRun>, Box<dyn std::error::Error>> {
+) -> Result<Walks, Box<dyn std::error::Error>> {
     let mut runs = Vec::new();
     for &m in methods {
         check_interrupt()?;
+        report::progress(&format!(
+            "walking: {m} ({} of {})",
+            runs.len() + 1,
+            methods.len()
+        ));
         let run = run_walk(lola, pattern, m, WalkParams::default())?;
         write_csv(&run, &dir.join(format!("{m}.csv")))?;
-        errln!("{m}: peak |L_z| {:.3} N m s, peak |tau_z| {:.2} N m, min distance {:.4} m, IK median {:.1} us",
-            run.summary.peak_abs_lz, run.summary.peak_abs_tau_z, run.summary.min_distance, run.summary.ik_us_median);
         summary.insert(m.name().to_string(), serde_json::to_value(run.summary)?);
         runs.push(run);
     }
+    report::progress("");
     write_plots(&runs, dir)?;
     if !args.dynamic {
-        return Ok(None);
+        return Ok((runs, None));
     }
     check_interrupt()?;
     let method = match methods {
@@ -126,7 +137,7 @@ fn walk_all(
     };
     let run = dynamic_walk(args, method, dir)?;
     summary.insert("dynamic".into(), serde_json::to_value(run.summary)?);
-    Ok(Some(run))
+    Ok((runs, Some((method, run))))
 }
 
 /// One-line error of a failed dynamic walk.
@@ -141,7 +152,7 @@ fn verdict_error(s: &DynamicWalkSummary) -> String {
     )
 }
 
-/// Runs the dynamic walk, writes `dynamic.csv` and its plots, prints the verdict line.
+/// Runs the dynamic walk, writes `dynamic.csv` and its plots.
 fn dynamic_walk(
     args: &WalkArgs,
     method: Method,
@@ -165,19 +176,6 @@ fn dynamic_walk(
         p
     };
     let run = run_dynamic_walk(&p)?;
-    let s = &run.summary;
-    outln!(
-        "dynamic ({method}): {} - {:.2} m of {:.2} m planned ({:.0} %), max trunk tilt {:.3} rad, min base height {:.3} m, max tracking error {:.4} rad, peak |tau_z| {:.2} N m, realtime factor {:.2}",
-        if s.walked { "walked" } else { "FAILED" },
-        s.distance,
-        s.planned_distance,
-        100.0 * s.progress,
-        s.max_tilt,
-        s.min_base_height,
-        s.max_tracking_error,
-        s.peak_abs_tau_z,
-        s.realtime_factor
-    )?;
     write_dynamic(&run, dir)?;
     Ok(run)
 }

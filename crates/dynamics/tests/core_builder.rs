@@ -294,3 +294,51 @@ fn merged_inertia_is_the_sum() {
         assert!((m.mass() - a.mass() - b.mass()).abs() < 1e-12);
     }
 }
+
+/// Coordinate names: one per coordinate, distinct, joint names for one-DoF joints and the
+/// quaternion free joint's components by letter (checked on the G1 against its URDF).
+#[test]
+fn coordinate_names_follow_the_joints() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/g1_29dof_rev_1_0.urdf");
+    let opts = biped_dynamics::urdf::UrdfOptions {
+        floating: true,
+        ..Default::default()
+    };
+    let model = biped_dynamics::urdf::load_file(path, &opts).unwrap().model;
+    let (q, v) = (model.q_names(), model.v_names());
+    assert_eq!((q.len(), v.len()), (model.nq(), model.nv()));
+    assert_eq!(
+        &q[..8],
+        [
+            "root.x",
+            "root.y",
+            "root.z",
+            "root.qx",
+            "root.qy",
+            "root.qz",
+            "root.qw",
+            "left_hip_pitch_joint"
+        ]
+    );
+    assert_eq!(
+        &v[..7],
+        [
+            "root.vx",
+            "root.vy",
+            "root.vz",
+            "root.wx",
+            "root.wy",
+            "root.wz",
+            "left_hip_pitch_joint"
+        ]
+    );
+    let text = std::fs::read_to_string(path).unwrap();
+    for name in &q[7..] {
+        assert!(
+            text.contains(&format!("<joint name=\"{name}\"")),
+            "{name} is a URDF joint"
+        );
+    }
+    let distinct: std::collections::HashSet<&String> = q.iter().collect();
+    assert_eq!(distinct.len(), q.len());
+}

@@ -55,7 +55,7 @@ fn flying_robot_records_conserved_centroidal_momentum_and_writes_csv() {
     rec.write_csv(&path).unwrap();
     let text = std::fs::read_to_string(&path).unwrap();
     let header = text.lines().next().unwrap();
-    assert!(header.starts_with("time,q[0],"), "{header}");
+    assert!(header.starts_with("time,q[root.x],"), "{header}");
     assert_eq!(text.lines().count(), 302);
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -73,7 +73,7 @@ fn recording_into_a_prefilled_recorder_matches_a_fresh_one() {
     let (mut a, mut b) = (Signals::new(&lp.plant, true), Signals::new(&lp.plant, true));
     let (mut fresh, mut mixed) = (Recorder::new(), Recorder::new());
     mixed.register("extra").unwrap();
-    mixed.register("v[3]").unwrap();
+    mixed.register("v[root.wx]").unwrap();
     let (_, _) = sc
         .run(lp.plant, Method::Rk4, &mut |f| {
             a.record(f, &mut fresh)?;

@@ -75,7 +75,7 @@ impl SourceArgs {
                 },
             )),
             (None, Some(n), None) if n > biped_dynamics::dill::MAX_DILL_LEVEL => Err(format!(
-                "--dill: level {n} is too large (at most {} is supported)",
+                "--dill: level {n} is too large (valid levels are 0..{})",
                 biped_dynamics::dill::MAX_DILL_LEVEL
             )),
             (None, Some(n), None) => Ok(ModelSource::Dill(n)),

@@ -119,7 +119,7 @@ fn plots(rec: &Recorder, plant: &Plant) -> Vec<Plot> {
     };
     let mut out = Vec::new();
     if let Some((qi, _)) = plant.floating_base() {
-        let base = vec![Line::new("base z", format!("q[{}]", qi + 2))];
+        let base = vec![Line::new("base z", q_column(plant, qi + 2))];
         out.push(plot("base_height.svg", "Base height", base, "height [m]"));
     }
     let com = vec![Line::new("CoM z", "com.z")];
@@ -156,9 +156,10 @@ fn plots(rec: &Recorder, plant: &Plant) -> Vec<Plot> {
         "L_G [N m s]",
     ));
     let acts = plant.actuators();
+    let q_names = plant.model().q_names();
     let angles = acts
         .iter()
-        .map(|a| Line::new(&a.name, format!("q[{}]", a.joint_q)));
+        .map(|a| Line::new(&a.name, format!("q[{}]", q_names[a.joint_q])));
     let title = selected("Joint angles", acts.len());
     out.push(plot(
         "joint_angles.svg",
@@ -244,6 +245,12 @@ pub fn write_all(
     }
     outdir::write_json(&dir.join("summary.json"), &json)?;
     Ok(files)
+}
+
+/// The `signals.csv` column of position coordinate `i` (`q[<coordinate name>]`).
+pub fn q_column(plant: &Plant, i: usize) -> String {
+    let names = plant.model().q_names();
+    format!("q[{}]", names.get(i).map_or("?", String::as_str))
 }
 
 /// Plot title noting a selection of the largest signals.

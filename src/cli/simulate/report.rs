@@ -47,7 +47,10 @@ pub fn summary_json(
 /// Height of the floating base in the last recorded row.
 pub fn final_base_height(rec: &Recorder, plant: &Plant) -> Option<f64> {
     let (qi, _) = plant.floating_base()?;
-    rec.column(&format!("q[{}]", qi + 2)).ok()?.last().copied()
+    rec.column(&super::output::q_column(plant, qi + 2))
+        .ok()?
+        .last()
+        .copied()
 }
 
 /// The IMU damping through the ankles in one line: how many ankles, gain and cutoff ranges.

@@ -36,6 +36,18 @@ impl Method {
         }
     }
 
+    /// What the method does with the arms, in one phrase for reports.
+    pub fn description(self) -> &'static str {
+        match self {
+            Method::None => "arms held still",
+            Method::Reference => "arms swing with the opposite legs (reference arm method, 7.3.1)",
+            Method::Compensation => {
+                "arms move to cancel the legs' vertical angular momentum (compensation, 7.3.2)"
+            }
+            Method::Minimization => "the IK minimises the vertical angular momentum (7.5)",
+        }
+    }
+
     /// True if the arm CoG tasks of Table 4.2 are active.
     pub fn arm_tasks(self) -> bool {
         self == Method::Reference

@@ -2,6 +2,7 @@
 //! brother links (section 2.4.1), joints and their coordinate index sets (2.26).
 
 mod builder;
+mod coordinates;
 pub mod coupling;
 pub(crate) mod joint;
 mod rotors;

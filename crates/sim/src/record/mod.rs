@@ -302,7 +302,8 @@ where
     E: From<std::io::Error>,
 {
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir)?;
+        std::fs::create_dir_all(dir)
+            .map_err(|e| std::io::Error::new(e.kind(), format!("folder {}: {e}", dir.display())))?;
     }
     let name = path
         .file_name()

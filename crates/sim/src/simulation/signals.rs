@@ -1,4 +1,5 @@
-//! Named signals of a frame for the recorder: `q[i]`, `v[i]`, per foot the ground wrench
+//! Named signals of a frame for the recorder: `q[<coordinate>]`, `v[<coordinate>]` (joint
+//! names, [`biped_dynamics::Model::q_names`]), per foot the ground wrench
 //! (`<foot>.fx .. <foot>.tz`, world axes, torque about the sole reference point) and the
 //! centre of pressure, per actuator the held command `cmd[<joint>]` (within the drive limits)
 //! and the motor current
@@ -33,8 +34,10 @@ impl Signals {
     /// Signals of `plant`; `momentum` adds `com.*` and `L_G.*` (see the module docs).
     pub fn new(plant: &Plant, momentum: bool) -> Self {
         let l = plant.layout();
-        let mut names: Vec<String> = (0..l.nq).map(|i| format!("q[{i}]")).collect();
-        names.extend((0..l.nv).map(|i| format!("v[{i}]")));
+        let model = plant.model();
+        let mut names: Vec<String> = model.q_names().iter().map(|n| format!("q[{n}]")).collect();
+        names.extend(model.v_names().iter().map(|n| format!("v[{n}]")));
+        debug_assert_eq!(names.len(), l.nq + l.nv);
         for f in plant.contact().specs() {
             for c in ["fx", "fy", "fz", "tx", "ty", "tz", "cop_x", "cop_y"] {
                 names.push(format!("{}.{c}", f.name));
