@@ -36,8 +36,10 @@ pub struct WalkArgs {
     #[arg(long, value_name = "S", default_value_t = 0.8, allow_hyphen_values = true,
           value_parser = |s: &str| range::walk::STEP_TIME.parse(s))]
     step_time: f64,
-    /// Arm method: none, reference, compensation, minimization or all.
-    #[arg(long, default_value = "all")]
+    /// Arm method: `none` (arms held still), `reference` (arms swing with the opposite legs,
+    /// thesis 7.3.1), `compensation` (arms move to cancel the legs' vertical angular momentum,
+    /// 7.3.2), `minimization` (the IK minimises the vertical angular momentum, 7.5) or `all`.
+    #[arg(long, value_name = "METHOD", default_value = "all")]
     method: String,
     /// Then track the walk of one method (--method, default minimization) in the contact
     /// simulation; fails if the robot falls.

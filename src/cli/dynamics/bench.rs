@@ -281,12 +281,12 @@ fn print_table(rows: &[Timings]) -> std::io::Result<()> {
         "{:>4} {:>6} {:>12} {:>12} {:>12} {:>10} {:>10} {:>10}",
         "n",
         "nv",
-        "O(n) us",
-        "CRBA us",
-        "sparse us",
-        "FW1 us",
-        "BW us",
-        "FW2 us"
+        "O(n) µs",
+        "CRBA µs",
+        "sparse µs",
+        "FW1 µs",
+        "BW µs",
+        "FW2 µs"
     )?;
     for t in rows {
         let n = t.n.map_or("-".to_string(), |n| n.to_string());

@@ -1,6 +1,7 @@
 //! SVG plot of forward-dynamics run time over the Dill level, like thesis Fig. 2.19 (log scales).
 
 use super::bench::Timings;
+use biped_sim::record::plot::{draw_legend, legend_width};
 use biped_sim::record::write_whole;
 use plotters::prelude::*;
 use std::path::Path;
@@ -32,7 +33,9 @@ fn draw(path: &Path, rows: &[Timings]) -> Result<(), Box<dyn std::error::Error>>
     let x_hi = rows.iter().map(dofs).fold(2.0, f64::max);
     let root = SVGBackend::new(path, (800, 560)).into_drawing_area();
     root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root)
+    let names: Vec<&str> = series.iter().map(|s| s.0).collect();
+    let (plot_area, legend_area) = root.split_horizontally(800 - legend_width(&names));
+    let mut chart = ChartBuilder::on(&plot_area)
         .caption(
             "Forward dynamics of Dill(n): run time per call",
             ("sans-serif", 20),
@@ -47,22 +50,15 @@ fn draw(path: &Path, rows: &[Timings]) -> Result<(), Box<dyn std::error::Error>>
     chart
         .configure_mesh()
         .x_desc("degrees of freedom 2^n")
-        .y_desc("run time [us]")
+        .y_desc("run time [µs]")
         .draw()?;
-    for (name, color, f) in series {
+    for (_, color, f) in series {
         let pts: Vec<(f64, f64)> = rows.iter().map(|t| (dofs(t), us(f(t)))).collect();
-        chart
-            .draw_series(LineSeries::new(pts.clone(), color.stroke_width(2)))?
-            .label(name)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], color));
+        chart.draw_series(LineSeries::new(pts.clone(), color.stroke_width(2)))?;
         chart.draw_series(pts.into_iter().map(|p| Circle::new(p, 3, color.filled())))?;
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()?;
+    let entries: Vec<(&str, RGBColor)> = series.iter().map(|s| (s.0, s.1)).collect();
+    draw_legend(&legend_area, &entries)?;
     root.present()?;
     Ok(())
 }

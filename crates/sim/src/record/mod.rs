@@ -13,7 +13,7 @@
 //! column after rows exist re-lays the buffer once.
 
 mod error;
-mod plot;
+pub mod plot;
 
 pub use error::RecordError;
 

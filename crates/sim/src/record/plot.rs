@@ -78,7 +78,8 @@ fn draw(
     let (y0, y1) = range(cols.iter().flat_map(|c| c.iter()));
     let root = SVGBackend::new(path, (900, 560)).into_drawing_area();
     root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root)
+    let (plot_area, legend_area) = root.split_horizontally(900 - legend_width(names));
+    let mut chart = ChartBuilder::on(&plot_area)
         .caption(title, ("sans-serif", 20))
         .margin(12)
         .x_label_area_size(44)
@@ -89,23 +90,44 @@ fn draw(
         .x_desc("time [s]")
         .y_desc(y_label)
         .draw()?;
+    let mut entries = Vec::new();
     for (i, (name, col)) in names.iter().zip(cols).enumerate() {
         let color = PALETTE[i % PALETTE.len()];
-        for (k, seg) in segments(time, col).into_iter().enumerate() {
-            let a = chart.draw_series(LineSeries::new(seg, color.stroke_width(2)))?;
-            if k == 0 {
-                a.label(*name)
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], color));
-            }
+        for seg in segments(time, col) {
+            chart.draw_series(LineSeries::new(seg, color.stroke_width(2)))?;
         }
+        entries.push((*name, color));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()?;
+    draw_legend(&legend_area, &entries)?;
     root.present()?;
+    Ok(())
+}
+
+/// Width in pixels of a legend panel for `names` ([`draw_legend`]).
+pub fn legend_width(names: &[&str]) -> u32 {
+    let longest = names.iter().map(|n| n.chars().count()).max().unwrap_or(0);
+    (40 + 8 * longest as u32).clamp(80, 320)
+}
+
+/// Draws a legend (a line sample and the name per entry) into its own panel beside the chart,
+/// so that it never covers the data.
+pub fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    entries: &[(&str, RGBColor)],
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    for (k, (name, color)) in entries.iter().enumerate() {
+        let y = 60 + 22 * k as i32;
+        let sample = PathElement::new(vec![(4, y), (26, y)], color.stroke_width(2));
+        area.draw(&sample)?;
+        area.draw(&Text::new(
+            name.to_string(),
+            (32, y - 7),
+            ("sans-serif", 14),
+        ))?;
+    }
     Ok(())
 }
 
