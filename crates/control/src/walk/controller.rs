@@ -11,12 +11,15 @@ use super::posture::{
 use super::targets::{legs, set_targets};
 use crate::avoidance::{AvoidanceParams, AvoidanceSummary, CollisionAvoidance};
 use crate::ik::joint_cost::JointCost;
-use crate::ik::{Rmrc, RmrcProblem, TaskBuffers, TaskMap, Weight};
+use crate::ik::{
+    JointLimits, JointRange, RmrcProblem, SaturatedRmrc, SaturationReport, TaskBuffers, TaskMap,
+    Weight,
+};
 use crate::momentum::{
     vertical_inertia, ArmSwing, ArmSwingNominal, ArmTargets, Compensation, CompensationLaw,
     MomentumMinimisation, MomentumReference, VerticalMomentum, LOLA_ARMS,
 };
-use crate::pattern::{PatternSample, WalkingPattern};
+use crate::pattern::{FootGeometry, PatternSample, WalkingPattern};
 use crate::tasks::{lola_joint_cost, LolaTasks, TaskId};
 use biped_dynamics::{Data, Jacobians};
 use biped_robots::lola::{lola_collision_model, LolaModel};
@@ -31,6 +34,8 @@ pub struct CycleInfo {
     pub error_norm: f64,
     /// Collision avoidance summary (`None` with avoidance off).
     pub avoidance: Option<AvoidanceSummary>,
+    /// Joints the solve held at their limit box (SNS).
+    pub limits: SaturationReport,
 }
 
 /// Lola's walking IK with one arm method (see [`Method`]).
@@ -40,7 +45,8 @@ pub struct WalkController {
     params: WalkParams,
     tasks: LolaTasks,
     buf: TaskBuffers,
-    rmrc: Rmrc,
+    sns: SaturatedRmrc,
+    foot: FootGeometry,
     xcmd: DVector<f64>,
     grad: DVector<f64>,
     grad_c: DVector<f64>,
@@ -132,7 +138,8 @@ impl WalkController {
             method,
             params,
             buf: TaskBuffers::new(&tasks),
-            rmrc: Rmrc::new(TaskId::TOTAL_ROWS, nv),
+            sns: SaturatedRmrc::new(TaskId::TOTAL_ROWS, nv, joint_limits(lola, &params)?)?,
+            foot: pattern.params().foot,
             xcmd: DVector::zeros(TaskId::TOTAL_ROWS),
             grad: DVector::zeros(nv),
             grad_c: DVector::zeros(nv),
@@ -191,7 +198,7 @@ impl WalkController {
         if self.method == Method::Minimization {
             self.minim.update(self.vm.jacobian_z(), &mut self.weight)?;
         }
-        self.solve()?;
+        let limits = self.solve(dt)?;
         if self.method == Method::Compensation {
             self.compensate(self.reference.sample(s.t).0)?;
         }
@@ -202,6 +209,7 @@ impl WalkController {
             rows: self.buf.rows,
             error_norm: self.buf.error_norm(),
             avoidance,
+            limits,
         })
     }
 
@@ -223,7 +231,8 @@ impl WalkController {
             let (t_step, turn) = self.step_turn;
             self.reference.start_step(s.t, t_step, turn)?;
         }
-        set_targets(s, &self.com_offset, arms.as_ref(), &mut self.tasks.targets);
+        let t = &mut self.tasks.targets;
+        set_targets(s, &self.com_offset, &self.foot, arms.as_ref(), t);
         Ok(())
     }
 
@@ -234,7 +243,8 @@ impl WalkController {
     /// `k L_d + (1 - k) L_z` exactly, including the tasks' reaction to the arm motion (the
     /// thesis estimates the producing momentum from the previous cycle instead, which at
     /// 1 kHz with gain 1 oscillates). The arm speed of the term is capped at
-    /// `compensation_max_speed`.
+    /// `compensation_max_speed`, and the term is shortened to stay inside the joint limit box
+    /// (joints held at their limits by the solve stay still).
     fn compensate(&mut self, l_desired: f64) -> Result<(), WalkError> {
         let jlz = self.vm.jacobian_z();
         self.dir.fill(0.0);
@@ -251,7 +261,7 @@ impl WalkController {
             damping: 0.0,
             softness: self.tasks.softness(),
         };
-        self.rmrc.resolve(&p, &mut self.qdot_r)?;
+        self.sns.resolve(&p, &mut self.qdot_r)?;
         let effect = jlz.dot(&self.qdot_r);
         if effect.abs() < 1e-12 {
             return Ok(());
@@ -261,6 +271,7 @@ impl WalkController {
         if peak > self.params.compensation_max_speed {
             f *= self.params.compensation_max_speed / peak;
         }
+        let f = self.sns.box_fraction(&self.qdot, &self.qdot_r, f);
         self.qdot.axpy(f, &self.qdot_r, 1.0);
         Ok(())
     }
@@ -275,8 +286,9 @@ impl WalkController {
         Ok(self.shoulders.map(|b| rpt * (data.world_pos[b] - c)))
     }
 
-    /// `xd_cmd = xd_d + K_x dx` (4.14b), then (4.12) by Alg. 4.3 into `qdot`.
-    fn solve(&mut self) -> Result<(), WalkError> {
+    /// `xd_cmd = xd_d + K_x dx` (4.14b), then (4.12) by Alg. 4.3 into `qdot`, inside the
+    /// joint limits (SNS) for a step `dt`.
+    fn solve(&mut self, dt: f64) -> Result<SaturationReport, WalkError> {
         let m = self.buf.rows;
         self.tasks.feedforward(&mut self.xcmd);
         for i in 0..m {
@@ -291,8 +303,7 @@ impl WalkController {
             damping: 0.0,
             softness: self.tasks.softness(),
         };
-        self.rmrc.solve(&p, &mut self.qdot)?;
-        Ok(())
+        Ok(self.sns.solve(&p, &self.q, dt, &mut self.qdot)?)
     }
 
     /// The method.
@@ -320,6 +331,11 @@ impl WalkController {
         self.vm.jacobian_z()
     }
 
+    /// The limit-keeping solver (its box and fixed joints of the last cycle).
+    pub fn limiter(&self) -> &SaturatedRmrc {
+        &self.sns
+    }
+
     /// The task set (targets, activations, model).
     pub fn tasks(&self) -> &LolaTasks {
         &self.tasks
@@ -329,4 +345,19 @@ impl WalkController {
     pub fn kinematics(&self) -> (&Data, &Jacobians) {
         self.tasks.kinematics()
     }
+}
+
+/// Hard limits of every actuated joint of `lola` with the settings of `params`.
+fn joint_limits(lola: &LolaModel, params: &WalkParams) -> Result<JointLimits, WalkError> {
+    let ranges = lola
+        .limits
+        .iter()
+        .map(|l| JointRange {
+            q_index: l.q_index,
+            v_index: l.v_index,
+            lower: l.lower,
+            upper: l.upper,
+        })
+        .collect();
+    Ok(JointLimits::new(ranges, params.limits)?)
 }
