@@ -2,9 +2,12 @@
 //!
 //! For a joint with range `[lo, hi]`, margin `m` and the distance `d = hi - m - q` left to
 //! the shrunk upper bound, the largest admissible velocity of the next step of length `dt` is
-//! `min(v_max, d / dt, sqrt(2 a_max d))` for `d >= 0` (never past the bound in one step, and
-//! slow enough to stop with deceleration `a_max`), and `k_r d < 0` beyond it (moving back
-//! inside at the recovery rate `k_r`); the lower bound is the mirror image. The box is what
+//! `min(v_max, v_b(d), d / dt)` for `d >= 0`, with the discrete braking curve
+//! `v_b = (sqrt(a^2 dt^2 + 8 a d) - a dt) / 2` (`a = a_max`, `v_b^2 / 2a + v_b dt / 2 = d`):
+//! moving at `v_b` the next step's `v_b` is exactly `a dt` lower, so a joint approaching its
+//! bound brakes with `a_max`; `d / dt` (binding only in the last `a dt^2`) lands it on the
+//! bound without passing it. Beyond the bound (`d < 0`) it is `k_r d`: moved back inside at
+//! the recovery rate `k_r`. The lower bound is the mirror image. The box is what
 //! [`super::saturation`] keeps the RMRC solution in, so `q` stays within `[lo + m, hi - m]`
 //! once inside. Generic over the robot: a joint is named only by its `q`/`v` indices.
 
@@ -35,6 +38,9 @@ pub struct LimitSettings {
     pub max_deceleration: f64,
     /// Rate `k_r` at which a joint beyond its shrunk range is moved back \[1/s].
     pub recovery_rate: f64,
+    /// Damping of the solve once joints are held, relative to the mean diagonal of
+    /// `J W^-1 J^T` ([`super::saturation`]).
+    pub regularisation: f64,
 }
 
 impl Default for LimitSettings {
@@ -42,8 +48,9 @@ impl Default for LimitSettings {
         Self {
             margin: 0.01,
             max_velocity: 10.0,
-            max_deceleration: 200.0,
+            max_deceleration: 100.0,
             recovery_rate: 20.0,
+            regularisation: 1e-3,
         }
     }
 }
@@ -60,10 +67,13 @@ impl JointLimits {
     pub fn new(ranges: Vec<JointRange>, settings: LimitSettings) -> Result<Self, IkError> {
         let s = settings;
         let positive = [s.max_velocity, s.max_deceleration, s.recovery_rate];
-        if !(s.margin >= 0.0 && s.margin.is_finite()) || positive.iter().any(|v| !(*v > 0.0)) {
+        let non_negative = [s.margin, s.regularisation];
+        if non_negative.iter().any(|v| !(*v >= 0.0 && v.is_finite()))
+            || positive.iter().any(|v| !(*v > 0.0))
+        {
             return Err(IkError::InvalidParameter {
                 name: "limit settings",
-                reason: "need margin >= 0 and positive velocity, deceleration and recovery rate",
+                reason: "need margin, regularisation >= 0 and positive velocity, deceleration and recovery rate",
             });
         }
         if ranges.iter().any(|r| !(r.upper - r.lower > 2.0 * s.margin)) {
@@ -85,13 +95,14 @@ impl JointLimits {
         &self.settings
     }
 
-    /// Largest speed towards a bound `d >= 0` away (negative beyond it) for a step `dt`.
+    /// Largest speed towards a bound `d >= 0` away (negative beyond it) for steps `dt`.
     fn admissible(&self, d: f64, dt: f64) -> f64 {
         let s = &self.settings;
+        let adt = s.max_deceleration * dt;
         if d >= 0.0 {
             s.max_velocity
+                .min(0.5 * ((adt * adt + 8.0 * s.max_deceleration * d).sqrt() - adt))
                 .min(d / dt)
-                .min((2.0 * s.max_deceleration * d).sqrt())
         } else {
             (s.recovery_rate * d).max(-s.max_velocity)
         }

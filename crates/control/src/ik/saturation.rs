@@ -9,9 +9,11 @@
 //! `J_f qd_f = xd - J_s qd_s`: the fixed columns of `J` are zeroed (so `B = J_f W_ff^-1 J_f^T`),
 //! their entries of `grad_H` and of the rank-one vector of `W = D + u u^T` are zeroed (which
 //! leaves `W_ff` and decouples the fixed joints) and `W_fs qd_s = u_f (u_s^T qd_s)` is added to
-//! the gradient. When the fixed joints take rank from the tasks, the regularisation
-//! `lambda^2 = regularisation` makes `B` solvable in the least-squares sense (damped least
-//! squares, 4.4): the tasks then yield, the limits never. After `max_iterations` the
+//! the gradient. Once joints are fixed, `B` is damped by `lambda^2 = rho mean(diag B)` of
+//! the full problem (`rho` = `LimitSettings::regularisation`; damped least squares, 4.4): when the fixed
+//! joints take rank from the tasks (a leg joint of a non-redundant leg task), the tasks then
+//! yield in the least-squares sense instead of the remaining joints racing to satisfy a
+//! nearly singular system; the limits never yield. After `max_iterations` the
 //! remaining joints are clamped into the box. Everything is preallocated (no allocation per
 //! call once the weight buffer has the shape of the weight in use).
 
@@ -44,10 +46,12 @@ pub struct SaturatedRmrc {
     grad: DVector<f64>,
     weight: Weight,
     report: SaturationReport,
+    /// `D^-1` and `D^-1 u` of the weight (for `diag W^-1`).
+    parts: DVector<f64>,
+    /// `lambda^2` of the last restricted solve.
+    damping: f64,
     /// Largest number of joints fixed per solve.
     pub max_iterations: usize,
-    /// `lambda^2` added to `B` once joints are fixed.
-    pub regularisation: f64,
 }
 
 impl SaturatedRmrc {
@@ -73,7 +77,8 @@ impl SaturatedRmrc {
             grad: DVector::zeros(n),
             weight: Weight::Identity,
             report: SaturationReport::default(),
-            regularisation: 1e-6,
+            parts: DVector::zeros(2 * n),
+            damping: 0.0,
         })
     }
 
@@ -116,14 +121,26 @@ impl SaturatedRmrc {
         self.fixed.fill(false);
         self.value.fill(0.0);
         self.report = SaturationReport::default();
-        self.rmrc.solve(p, qdot)?;
+        self.saturate(p, qdot)
+    }
+
+    /// Solves `p` with the joints fixed so far (by [`Self::solve`] or [`Self::hold`]) held,
+    /// fixing more while any leaves the box of the last [`Self::solve`].
+    pub fn saturate(
+        &mut self,
+        p: &RmrcProblem<'_>,
+        qdot: &mut DVector<f64>,
+    ) -> Result<SaturationReport, IkError> {
+        self.report.clamped = 0;
+        match self.report.fixed {
+            0 => self.rmrc.solve(p, qdot)?,
+            _ => self.solve_restricted(p, qdot)?,
+        }
         for _ in 0..self.max_iterations {
             let Some(i) = self.worst(qdot) else {
                 return Ok(self.report);
             };
-            self.fixed[i] = true;
-            self.value[i] = qdot[i].clamp(self.lo[i], self.hi[i]);
-            self.report.fixed += 1;
+            self.hold(i, qdot[i]);
             self.solve_restricted(p, qdot)?;
         }
         for r in self.limits.ranges() {
@@ -151,7 +168,7 @@ impl SaturatedRmrc {
             xdot: &self.xdot,
             weight: restricted(p.weight, &self.weight),
             null_space: Some((&self.grad, 1.0)),
-            damping: p.damping + self.regularisation,
+            damping: p.damping + self.damping,
             softness: p.softness,
         };
         self.rmrc.resolve(&q, qdot)?;
@@ -161,6 +178,35 @@ impl SaturatedRmrc {
             }
         }
         Ok(())
+    }
+
+    /// Holds joint `i` (v index) at `value` clamped into its box in the next
+    /// [`Self::saturate`].
+    pub fn hold(&mut self, i: usize, value: f64) {
+        if !self.fixed[i] {
+            self.fixed[i] = true;
+            self.report.fixed += 1;
+        }
+        self.value[i] = value.clamp(self.lo[i], self.hi[i]);
+    }
+
+    /// Free joint furthest outside the box in `base + f extra`, with that value.
+    pub fn worst_outside(
+        &self,
+        base: &DVector<f64>,
+        extra: &DVector<f64>,
+        f: f64,
+    ) -> Option<(usize, f64)> {
+        let mut best = (None, 1e-12);
+        for r in self.limits.ranges() {
+            let i = r.v_index;
+            let v = base[i] + f * extra[i];
+            let excess = (v - self.hi[i]).max(self.lo[i] - v);
+            if !self.fixed[i] && excess > best.1 {
+                best = (Some((i, v)), excess);
+            }
+        }
+        best.0
     }
 
     /// Largest `f'` between 0 and `f` with `base + f' extra` inside the box of the last solve
@@ -184,15 +230,7 @@ impl SaturatedRmrc {
 
     /// Free joint furthest outside its box, if any.
     fn worst(&self, qdot: &DVector<f64>) -> Option<usize> {
-        let mut best = (None, 1e-12);
-        for r in self.limits.ranges() {
-            let i = r.v_index;
-            let excess = (qdot[i] - self.hi[i]).max(self.lo[i] - qdot[i]);
-            if !self.fixed[i] && excess > best.1 {
-                best = (Some(i), excess);
-            }
-        }
-        best.0
+        self.worst_outside(qdot, qdot, 0.0).map(|(i, _)| i)
     }
 
     /// Solves the problem without the fixed joints (module docs) and sets their velocities.
@@ -221,13 +259,14 @@ impl SaturatedRmrc {
         }
         self.restrict_weight(p.weight);
         self.restrict_gradient(p, true);
+        self.damping = self.regularisation(p.jacobian, p.weight, m);
         let q = RmrcProblem {
             jacobian: &self.jac,
             rows: m,
             xdot: &self.xdot,
             weight: restricted(p.weight, &self.weight),
             null_space: Some((&self.grad, 1.0)),
-            damping: p.damping + self.regularisation,
+            damping: p.damping + self.damping,
             softness: p.softness,
         };
         self.rmrc.solve(&q, qdot)?;
@@ -237,6 +276,22 @@ impl SaturatedRmrc {
             }
         }
         Ok(())
+    }
+
+    /// `lambda^2 = (rho + 1e-12) mean(diag(J W^-1 J^T))` over the first `m` rows of the full
+    /// Jacobian `j`, with `diag W^-1 = D^-1 - (D^-1 u)^2 / c` (7.14); the floor keeps `B`
+    /// positive definite when the fixed joints take all rank (`rho = 0`: practically exact).
+    fn regularisation(&mut self, j: &DMatrix<f64>, w: &Weight, m: usize) -> f64 {
+        let n = self.fixed.len();
+        let (dinv, du) = self.parts.as_mut_slice().split_at_mut(n);
+        let c = w.inverse_parts(dinv, du);
+        let columns = j.as_slice().chunks_exact(j.nrows().max(1));
+        let mut trace = 0.0;
+        for (col, (d, e)) in columns.zip(dinv.iter().zip(du.iter())) {
+            let winv = if c > 0.0 { d - e * e / c } else { *d };
+            trace += winv * col[..m].iter().map(|x| x * x).sum::<f64>();
+        }
+        (self.limits.settings().regularisation + 1e-12) * trace / m.max(1) as f64
     }
 
     /// `grad = alpha_N grad_H` zeroed at the fixed joints, plus `W_fs qd_s` if `coupled`.

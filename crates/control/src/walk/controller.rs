@@ -25,6 +25,8 @@ use biped_dynamics::{Data, Jacobians};
 use biped_robots::lola::{lola_collision_model, LolaModel};
 use nalgebra::{DVector, Vector3};
 
+mod compensate;
+
 /// What one cycle did.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CycleInfo {
@@ -233,46 +235,6 @@ impl WalkController {
         }
         let t = &mut self.tasks.targets;
         set_targets(s, &self.com_offset, &self.foot, arms.as_ref(), t);
-        Ok(())
-    }
-
-    /// Compensation (7.3)-(7.9) solved within the cycle: RMRC is linear in the null-space
-    /// input, so the response `qd_r` to the reducing direction `y_r = J_{L,r,z}^T` (arms
-    /// only, zero task velocity) is computed with the same factorisation, and
-    /// `qd += k s qd_r` with `s = (L_d - J_Lz qd) / (J_Lz qd_r)` sets `L_z` to
-    /// `k L_d + (1 - k) L_z` exactly, including the tasks' reaction to the arm motion (the
-    /// thesis estimates the producing momentum from the previous cycle instead, which at
-    /// 1 kHz with gain 1 oscillates). The arm speed of the term is capped at
-    /// `compensation_max_speed`, and the term is shortened to stay inside the joint limit box
-    /// (joints held at their limits by the solve stay still).
-    fn compensate(&mut self, l_desired: f64) -> Result<(), WalkError> {
-        let jlz = self.vm.jacobian_z();
-        self.dir.fill(0.0);
-        for &i in self.comp.reducing() {
-            self.dir[i] = jlz[i];
-        }
-        self.zero_x.fill(0.0);
-        let p = RmrcProblem {
-            jacobian: &self.buf.jac,
-            rows: self.buf.rows,
-            xdot: &self.zero_x,
-            weight: &self.weight,
-            null_space: Some((&self.dir, 1.0)),
-            damping: 0.0,
-            softness: self.tasks.softness(),
-        };
-        self.sns.resolve(&p, &mut self.qdot_r)?;
-        let effect = jlz.dot(&self.qdot_r);
-        if effect.abs() < 1e-12 {
-            return Ok(());
-        }
-        let mut f = self.params.compensation_gain * (l_desired - jlz.dot(&self.qdot)) / effect;
-        let peak = self.qdot_r.amax() * f.abs();
-        if peak > self.params.compensation_max_speed {
-            f *= self.params.compensation_max_speed / peak;
-        }
-        let f = self.sns.box_fraction(&self.qdot, &self.qdot_r, f);
-        self.qdot.axpy(f, &self.qdot_r, 1.0);
         Ok(())
     }
 
