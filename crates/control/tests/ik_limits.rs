@@ -127,11 +127,11 @@ proptest! {
             let r = &j * &qd - &xd;
             prop_assert!(r.amax() < 1e-6 * (1.0 + xd.amax()), "task residual {}", r.amax());
         }
-        // without active limits the solve is plain RMRC (4.12)
+        // without active limits the solve is plain RMRC (4.12) (undamped up to the 1e-12 floor)
         if report.fixed == 0 {
             let mut plain = DVector::zeros(n);
             Rmrc::new(m, n).solve(&p, &mut plain).unwrap();
-            prop_assert!((&plain - &qd).amax() < 1e-12);
+            prop_assert!((&plain - &qd).amax() < 1e-9 * (1.0 + plain.amax()));
         }
     }
 }

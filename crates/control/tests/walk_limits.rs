@@ -44,8 +44,8 @@ fn default_walk_keeps_every_joint_in_range_for_every_method() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(8))]
-    /// Random walks of 4 steps: every cycle keeps every joint inside its range.
+    #![proptest_config(ProptestConfig::with_cases(16))]
+    /// Random walks of 4 steps (16 cases): every cycle keeps every joint inside its range.
     #[test]
     fn random_walks_keep_the_joint_ranges(
         len in 0.2f64..0.5, time in 0.7f64..1.2, turn in -0.6f64..0.6, m in 0usize..4,

@@ -2,9 +2,12 @@
 //! Khatib 2012, without task scaling): the joint velocities of (4.12) are kept inside the box
 //! of [`super::limits`].
 //!
-//! Loop: solve (4.12) by Algorithm 4.3; while a joint leaves its box, take the one furthest
-//! out, fix its velocity at the box edge, remove it from the solve and solve again for the
-//! remaining joints. With joints `s` fixed at `qd_s` the remaining problem is
+//! Loop (an active-set iteration, warm-started with the joints held in the previous call so
+//! that constraints switch only where the solution crosses the box edge, which keeps `qd`
+//! continuous in time): solve (4.12) by Algorithm 4.3; while a joint leaves its box, take
+//! the one furthest out, fix its velocity at the box edge, remove it from the solve and solve
+//! again for the remaining joints; release a held joint whose multiplier shows it would move
+//! back inside. With joints `s` fixed at `qd_s` the remaining problem is
 //! `min 1/2 qd_f^T W_ff qd_f + (alpha_N grad_H_f + W_fs qd_s)^T qd_f` subject to
 //! `J_f qd_f = xd - J_s qd_s`: the fixed columns of `J` are zeroed (so `B = J_f W_ff^-1 J_f^T`),
 //! their entries of `grad_H` and of the rank-one vector of `W = D + u u^T` are zeroed (which
@@ -17,11 +20,14 @@
 //! remaining joints are clamped into the box. Everything is preallocated (no allocation per
 //! call once the weight buffer has the shape of the weight in use).
 
+mod restrict;
+
 use super::limits::JointLimits;
 use super::rmrc::{Rmrc, RmrcProblem};
 use super::weight::Weight;
 use crate::error::IkError;
 use nalgebra::{DMatrix, DVector};
+use restrict::restricted;
 
 /// What the last saturated solve did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -40,6 +46,8 @@ pub struct SaturatedRmrc {
     lo: DVector<f64>,
     hi: DVector<f64>,
     fixed: Vec<bool>,
+    upper: Vec<bool>,
+    pinned: Vec<bool>,
     value: DVector<f64>,
     jac: DMatrix<f64>,
     xdot: DVector<f64>,
@@ -71,6 +79,8 @@ impl SaturatedRmrc {
             lo: DVector::zeros(n),
             hi: DVector::zeros(n),
             fixed: vec![false; n],
+            upper: vec![false; n],
+            pinned: vec![false; n],
             value: DVector::zeros(n),
             jac: DMatrix::zeros(m_max, n),
             xdot: DVector::zeros(m_max),
@@ -118,30 +128,50 @@ impl SaturatedRmrc {
             });
         }
         self.limits.velocity_box(q, dt, &mut self.lo, &mut self.hi);
-        self.fixed.fill(false);
-        self.value.fill(0.0);
-        self.report = SaturationReport::default();
+        self.pinned.fill(false);
+        // warm start: the joints held in the last solve stay held at their (moved) box edge
+        for i in 0..self.fixed.len() {
+            if self.fixed[i] {
+                self.value[i] = if self.upper[i] {
+                    self.hi[i]
+                } else {
+                    self.lo[i]
+                };
+            }
+        }
+        self.report = SaturationReport {
+            fixed: self.fixed.iter().filter(|f| **f).count(),
+            clamped: 0,
+        };
         self.saturate(p, qdot)
     }
 
-    /// Solves `p` with the joints fixed so far (by [`Self::solve`] or [`Self::hold`]) held,
-    /// fixing more while any leaves the box of the last [`Self::solve`].
+    /// Forgets the joints held so far (the next [`Self::solve`] starts from the free problem).
+    pub fn reset(&mut self) {
+        self.fixed.fill(false);
+        self.report = SaturationReport::default();
+    }
+
+    /// Solves `p` with the joints held so far (by the last [`Self::solve`] or [`Self::hold`]),
+    /// holding more while any leaves the box and releasing a held joint whose multiplier
+    /// says it would move inside (active-set iteration, one joint per step).
     pub fn saturate(
         &mut self,
         p: &RmrcProblem<'_>,
         qdot: &mut DVector<f64>,
     ) -> Result<SaturationReport, IkError> {
         self.report.clamped = 0;
-        match self.report.fixed {
-            0 => self.rmrc.solve(p, qdot)?,
-            _ => self.solve_restricted(p, qdot)?,
-        }
-        for _ in 0..self.max_iterations {
-            let Some(i) = self.worst(qdot) else {
+        self.solve_held(p, qdot)?;
+        for _ in 0..2 * self.max_iterations {
+            if let Some(i) = self.worst(qdot) {
+                self.hold_at(i, qdot[i]);
+            } else if let Some(i) = self.releasable(p, qdot) {
+                self.fixed[i] = false;
+                self.report.fixed -= 1;
+            } else {
                 return Ok(self.report);
-            };
-            self.hold(i, qdot[i]);
-            self.solve_restricted(p, qdot)?;
+            }
+            self.solve_held(p, qdot)?;
         }
         for r in self.limits.ranges() {
             let i = r.v_index;
@@ -157,7 +187,11 @@ impl SaturatedRmrc {
     /// factorisation (as [`Rmrc::resolve`]); fixed entries of `qdot` are 0.
     pub fn resolve(&mut self, p: &RmrcProblem<'_>, qdot: &mut DVector<f64>) -> Result<(), IkError> {
         if self.report.fixed == 0 {
-            return self.rmrc.resolve(p, qdot);
+            let damped = RmrcProblem {
+                damping: p.damping + self.damping,
+                ..*p
+            };
+            return self.rmrc.resolve(&damped, qdot);
         }
         let m = p.rows;
         self.xdot.rows_mut(0, m).copy_from(&p.xdot.rows(0, m));
@@ -180,14 +214,71 @@ impl SaturatedRmrc {
         Ok(())
     }
 
-    /// Holds joint `i` (v index) at `value` clamped into its box in the next
-    /// [`Self::saturate`].
+    /// Holds joint `i` (v index) at the box edge nearer to `value` in the next
+    /// [`Self::saturate`] calls until the next [`Self::solve`] (not released in between).
     pub fn hold(&mut self, i: usize, value: f64) {
+        self.hold_at(i, value);
+        self.pinned[i] = true;
+    }
+
+    /// Holds joint `i` at the box edge nearer to `value`.
+    fn hold_at(&mut self, i: usize, value: f64) {
         if !self.fixed[i] {
             self.fixed[i] = true;
             self.report.fixed += 1;
         }
-        self.value[i] = value.clamp(self.lo[i], self.hi[i]);
+        self.upper[i] = value >= 0.5 * (self.lo[i] + self.hi[i]);
+        self.value[i] = if self.upper[i] {
+            self.hi[i]
+        } else {
+            self.lo[i]
+        };
+    }
+
+    /// Solves with the held joints removed (or the whole problem when none is held), damped
+    /// alike in both cases so that holding and releasing a joint solve the same problem.
+    fn solve_held(&mut self, p: &RmrcProblem<'_>, qdot: &mut DVector<f64>) -> Result<(), IkError> {
+        self.damping = self.regularisation(p.jacobian, p.weight, p.rows);
+        match self.report.fixed {
+            0 => {
+                let damped = RmrcProblem {
+                    damping: p.damping + self.damping,
+                    ..*p
+                };
+                self.rmrc.solve(&damped, qdot)
+            }
+            _ => self.solve_restricted(p, qdot),
+        }
+    }
+
+    /// Held joint with the largest multiplier of the wrong sign, if any: with
+    /// `r = W qd + alpha_N grad_H - J^T lambda` (zero for the free joints, the force that
+    /// holds a fixed one), a joint held at its upper edge is released for `r_i > 0`, at its
+    /// lower edge for `r_i < 0` (KKT conditions of the box constraints).
+    fn releasable(&self, p: &RmrcProblem<'_>, qdot: &DVector<f64>) -> Option<usize> {
+        let lambda = &self.rmrc.multipliers().as_slice()[..p.rows];
+        let uq = match p.weight {
+            Weight::DiagonalRankOne { u, .. } => u.dot(qdot),
+            _ => 0.0,
+        };
+        let nr = p.jacobian.nrows();
+        let mut best = (None, 1e-9);
+        for i in (0..self.fixed.len()).filter(|&i| self.fixed[i] && !self.pinned[i]) {
+            let wq = match p.weight {
+                Weight::Identity => qdot[i],
+                Weight::Diagonal(d) => d[i] * qdot[i],
+                Weight::DiagonalRankOne { diag, u } => diag[i] * qdot[i] + u[i] * uq,
+            };
+            let g = p.null_space.map_or(0.0, |(g, a)| a * g[i]);
+            let col = &p.jacobian.as_slice()[i * nr..i * nr + p.rows];
+            let jl: f64 = col.iter().zip(lambda).map(|(j, l)| j * l).sum();
+            let r = wq + g - jl;
+            let wrong = if self.upper[i] { r } else { -r };
+            if wrong > best.1 {
+                best = (Some(i), wrong);
+            }
+        }
+        best.0
     }
 
     /// Free joint furthest outside the box in `base + f extra`, with that value.
@@ -231,123 +322,5 @@ impl SaturatedRmrc {
     /// Free joint furthest outside its box, if any.
     fn worst(&self, qdot: &DVector<f64>) -> Option<usize> {
         self.worst_outside(qdot, qdot, 0.0).map(|(i, _)| i)
-    }
-
-    /// Solves the problem without the fixed joints (module docs) and sets their velocities.
-    fn solve_restricted(
-        &mut self,
-        p: &RmrcProblem<'_>,
-        qdot: &mut DVector<f64>,
-    ) -> Result<(), IkError> {
-        let m = p.rows;
-        let nr = p.jacobian.nrows();
-        let src = p.jacobian.as_slice();
-        let mm = self.jac.nrows();
-        let dst = self.jac.as_mut_slice();
-        self.xdot.rows_mut(0, m).copy_from(&p.xdot.rows(0, m));
-        for (c, fixed) in self.fixed.iter().enumerate() {
-            let (a, b) = (&src[c * nr..c * nr + m], &mut dst[c * mm..c * mm + m]);
-            if *fixed {
-                b.fill(0.0);
-                let s = self.value[c];
-                for (x, j) in self.xdot.iter_mut().zip(a) {
-                    *x -= j * s;
-                }
-            } else {
-                b.copy_from_slice(a);
-            }
-        }
-        self.restrict_weight(p.weight);
-        self.restrict_gradient(p, true);
-        self.damping = self.regularisation(p.jacobian, p.weight, m);
-        let q = RmrcProblem {
-            jacobian: &self.jac,
-            rows: m,
-            xdot: &self.xdot,
-            weight: restricted(p.weight, &self.weight),
-            null_space: Some((&self.grad, 1.0)),
-            damping: p.damping + self.damping,
-            softness: p.softness,
-        };
-        self.rmrc.solve(&q, qdot)?;
-        for (i, f) in self.fixed.iter().enumerate() {
-            if *f {
-                qdot[i] = self.value[i];
-            }
-        }
-        Ok(())
-    }
-
-    /// `lambda^2 = (rho + 1e-12) mean(diag(J W^-1 J^T))` over the first `m` rows of the full
-    /// Jacobian `j`, with `diag W^-1 = D^-1 - (D^-1 u)^2 / c` (7.14); the floor keeps `B`
-    /// positive definite when the fixed joints take all rank (`rho = 0`: practically exact).
-    fn regularisation(&mut self, j: &DMatrix<f64>, w: &Weight, m: usize) -> f64 {
-        let n = self.fixed.len();
-        let (dinv, du) = self.parts.as_mut_slice().split_at_mut(n);
-        let c = w.inverse_parts(dinv, du);
-        let columns = j.as_slice().chunks_exact(j.nrows().max(1));
-        let mut trace = 0.0;
-        for (col, (d, e)) in columns.zip(dinv.iter().zip(du.iter())) {
-            let winv = if c > 0.0 { d - e * e / c } else { *d };
-            trace += winv * col[..m].iter().map(|x| x * x).sum::<f64>();
-        }
-        (self.limits.settings().regularisation + 1e-12) * trace / m.max(1) as f64
-    }
-
-    /// `grad = alpha_N grad_H` zeroed at the fixed joints, plus `W_fs qd_s` if `coupled`.
-    fn restrict_gradient(&mut self, p: &RmrcProblem<'_>, coupled: bool) {
-        match p.null_space {
-            Some((g, alpha)) => {
-                self.grad.copy_from(g);
-                self.grad *= alpha;
-            }
-            None => self.grad.fill(0.0),
-        }
-        let cross = match p.weight {
-            Weight::DiagonalRankOne { u, .. } if coupled => {
-                let us: f64 = (0..u.len())
-                    .filter(|&i| self.fixed[i])
-                    .map(|i| u[i] * self.value[i])
-                    .sum();
-                Some((u, us))
-            }
-            _ => None,
-        };
-        for i in 0..self.grad.len() {
-            if self.fixed[i] {
-                self.grad[i] = 0.0;
-            } else if let Some((u, us)) = cross {
-                self.grad[i] += u[i] * us;
-            }
-        }
-    }
-
-    /// Copies a rank-one weight with the fixed joints' entries of `u` zeroed into the buffer.
-    fn restrict_weight(&mut self, w: &Weight) {
-        if let Weight::DiagonalRankOne { diag, u } = w {
-            match &mut self.weight {
-                Weight::DiagonalRankOne { diag: d, u: v } if v.len() == u.len() => {
-                    d.copy_from(diag);
-                    v.copy_from(u);
-                }
-                buf => *buf = w.clone(),
-            }
-            if let Weight::DiagonalRankOne { u: v, .. } = &mut self.weight {
-                for (x, f) in v.iter_mut().zip(&self.fixed) {
-                    if *f {
-                        *x = 0.0;
-                    }
-                }
-            }
-        }
-    }
-}
-
-/// The weight of a restricted solve: the buffer for a rank-one weight, else the weight itself
-/// (a diagonal weight needs no change once the fixed columns and gradient entries are 0).
-fn restricted<'a>(w: &'a Weight, buf: &'a Weight) -> &'a Weight {
-    match w {
-        Weight::DiagonalRankOne { .. } => buf,
-        _ => w,
     }
 }
