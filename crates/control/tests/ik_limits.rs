@@ -242,9 +242,9 @@ impl TaskMap for Chain {
         th[2] = th[1] + q[2];
         for c in 0..3 {
             let (mut dx, mut dy) = (0.0, 0.0);
-            for k in c..3 {
-                dx -= th[k].sin();
-                dy += th[k].cos();
+            for t in &th[c..] {
+                dx -= t.sin();
+                dy += t.cos();
             }
             jac[(0, c)] = dx;
             jac[(1, c)] = dy;

@@ -69,14 +69,18 @@ impl JointLimits {
         let positive = [s.max_velocity, s.max_deceleration, s.recovery_rate];
         let non_negative = [s.margin, s.regularisation];
         if non_negative.iter().any(|v| !(*v >= 0.0 && v.is_finite()))
-            || positive.iter().any(|v| !(*v > 0.0))
+            || positive.iter().any(|v| v.is_nan() || *v <= 0.0)
         {
             return Err(IkError::InvalidParameter {
                 name: "limit settings",
                 reason: "need margin, regularisation >= 0 and positive velocity, deceleration and recovery rate",
             });
         }
-        if ranges.iter().any(|r| !(r.upper - r.lower > 2.0 * s.margin)) {
+        let narrow = |r: &JointRange| {
+            let width = r.upper - r.lower;
+            width.is_nan() || !width.is_finite() || width <= 2.0 * s.margin
+        };
+        if ranges.iter().any(narrow) {
             return Err(IkError::InvalidParameter {
                 name: "joint range",
                 reason: "every range must be finite and wider than twice the margin",

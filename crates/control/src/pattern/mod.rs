@@ -9,6 +9,7 @@
 //! - [`preview`] + [`dare`]: cart-table ZMP preview servo (Katayama-type LQ servo with
 //!   integral action), gains from the DARE solved by doubling.
 //! - [`swing`]: minimum-jerk swing-foot trajectories with a C2 lift profile.
+//! - [`reach`]: steps within the legs' reach and step times long enough for the swing.
 //! - [`roll`]: toe-off and heel strike (heel lift about the toe joint axis at the end of
 //!   double support, heel-first landing rolling flat at its start).
 //! - [`generate`]: [`WalkingPattern`], sampled at the control period.
@@ -38,6 +39,7 @@ pub mod footsteps;
 pub mod generate;
 mod params;
 pub mod preview;
+pub mod reach;
 pub mod roll;
 pub mod swing;
 pub mod timeline;

@@ -77,6 +77,12 @@ pub struct PatternParams {
     pub foot: FootGeometry,
     /// Toe-off and heel strike (timing and angles).
     pub roll: FootRoll,
+    /// Largest distance between consecutive footprints the legs reach \[m] (Lola-like model in
+    /// the walking posture: at 0.5 m steps, 0.53 m between the sole origins, the legs are
+    /// stretched at touch-down).
+    pub reach: f64,
+    /// Top speed of the swing foot \[m/s] (sets the shortest single support, [`super::reach`]).
+    pub max_swing_speed: f64,
 }
 
 /// Standing CoM height of the Lola-like model with 0.4 rad knee bend (`fit::standing_com_height` = 0.9603 m) \[m].
@@ -107,6 +113,8 @@ impl Default for PatternParams {
             input_weight: 1e-6,
             foot: FootGeometry::default(),
             roll: FootRoll::default(),
+            reach: 0.55,
+            max_swing_speed: 4.0,
         }
     }
 }
@@ -146,7 +154,8 @@ impl PatternParams {
         self.start_time + self.n_steps as f64 * self.step_time + self.end_time
     }
 
-    /// Rejects non-finite, non-positive or absurd values with a typed error.
+    /// Rejects non-finite, non-positive or absurd values, then steps beyond the legs' reach
+    /// and step times too short for the swing ([`super::reach`]), with typed errors.
     pub fn validate(&self) -> Result<(), PatternError> {
         let n = self.n_steps as f64;
         range("n_steps", n, 1.0, 1000.0, "1 to 1000 steps")?;
@@ -208,6 +217,14 @@ impl PatternParams {
             "0 to 0.5 m",
         )?;
         self.roll.validate()?;
+        range("reach", self.reach, 0.05, 5.0, "0.05 to 5 m")?;
+        range(
+            "max_swing_speed",
+            self.max_swing_speed,
+            0.1,
+            50.0,
+            "0.1 to 50 m/s",
+        )?;
         let min_phase = 2.0 * self.dt;
         range(
             "ds_ratio",
@@ -231,6 +248,7 @@ impl PatternParams {
             1.0,
             1e5,
             "more than 1e5 preview samples",
-        )
+        )?;
+        super::reach::check(self)
     }
 }
