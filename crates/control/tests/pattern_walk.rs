@@ -3,7 +3,7 @@
 
 use biped_control::pattern::footsteps::{foot_corners, Pose2};
 use biped_control::pattern::{
-    Foot, FootGeometry, PatternParams, PatternSample, Phase, WalkingPattern,
+    Foot, FootGeometry, FootRoll, PatternParams, PatternSample, Phase, WalkingPattern,
 };
 use nalgebra::{Vector2, Vector3};
 
@@ -173,7 +173,9 @@ fn feet_and_torso_velocities_are_finite_differences() {
                     b.linear
                 );
                 let dq = a.pose.rotation.rotation_to(&c.pose.rotation).scaled_axis() / (2.0 * p.dt);
-                assert!((dq - b.angular).norm() < 2e-3, "{name} k {k}");
+                // heel lift and roll pitch the feet with jerks up to ~3e4 rad/s^3: the
+                // central difference is off by dt^2/6 * that ~ 4e-3 rad/s
+                assert!((dq - b.angular).norm() < 5e-3, "{name} k {k}");
             }
             let dq = s[k - 1].torso.rotation_to(&s[k + 1].torso).scaled_axis() / (2.0 * p.dt);
             assert!((dq - s[k].torso_angular).norm() < 2e-3, "{name} k {k}");
@@ -190,7 +192,14 @@ fn feet_and_torso_velocities_are_finite_differences() {
 
 #[test]
 fn swing_foot_lands_exactly_on_the_planned_footstep_at_rest() {
+    // flat feet: with heel strike the foot touches down on its heel and is flat on the
+    // footstep at the end of the roll, and toe-off raises the sole origin above the lift
+    // profile (both checked in pattern_roll.rs)
     for (name, p) in walks() {
+        let p = PatternParams {
+            roll: FootRoll::flat(),
+            ..p
+        };
         let w = WalkingPattern::generate(&p).unwrap();
         let s = w.samples();
         let plan = w.footsteps();

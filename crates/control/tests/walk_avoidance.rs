@@ -9,14 +9,14 @@ use biped_robots::lola::{self, LolaType};
 fn min_distance(avoidance: bool) -> f64 {
     let lola = lola::build(LolaType::Type2).unwrap();
     let params = biped_control::pattern::PatternParams {
-        step_sideways: 0.2,
+        step_sideways: 0.12,
         ..walk_pattern_params(&lola, 4, 0.0, 0.8).unwrap()
     };
     let pattern = WalkingPattern::generate(&params).unwrap();
     let walk = WalkParams {
         avoidance,
         // arms hanging close to the body, nearly straight (the scenario's start posture)
-        arm_pose: [0.0, -0.09, -0.3],
+        arm_pose: [0.0, -0.07, -0.3],
         ..WalkParams::default()
     };
     let run = run_walk(&lola, &pattern, Method::Compensation, walk).unwrap();

@@ -7,8 +7,10 @@
 //! through [`TaskMap::retract`] (quaternion base), the trapezoidal rule (4.21) becomes
 //! `q_i+1 = q_i (+) (qd_i + qd_i+1)/2 dt`.
 
+use super::limits::JointLimits;
 use super::linalg::{check_dim, check_finite};
 use super::rmrc::{Rmrc, RmrcProblem};
+use super::saturation::SaturatedRmrc;
 use super::task_map::{TaskBuffers, TaskMap};
 use super::weight::Weight;
 use crate::error::IkError;
@@ -29,10 +31,12 @@ pub struct CycleInput<'a> {
     pub dt: f64,
 }
 
-/// Preallocated closed-loop differential IK (Fig. 4.3): (4.12)-(4.16).
+/// Preallocated closed-loop differential IK (Fig. 4.3): (4.12)-(4.16), optionally with hard
+/// joint limits ([`SaturatedRmrc`]).
 #[derive(Debug, Clone)]
 pub struct ClosedLoopIk {
     rmrc: Rmrc,
+    limited: Option<SaturatedRmrc>,
     /// Task buffers of the last evaluation (error, Jacobian).
     pub tasks: TaskBuffers,
     xcmd: DVector<f64>,
@@ -46,6 +50,7 @@ impl ClosedLoopIk {
     pub fn new(task: &impl TaskMap) -> Self {
         Self {
             rmrc: Rmrc::new(task.max_rows(), task.nv()),
+            limited: None,
             tasks: TaskBuffers::new(task),
             xcmd: DVector::zeros(task.max_rows()),
             qdot: DVector::zeros(task.nv()),
@@ -53,8 +58,23 @@ impl ClosedLoopIk {
         }
     }
 
+    /// Workspace sized for `task` whose steps keep `limits` (SNS, [`SaturatedRmrc`]).
+    pub fn with_limits(task: &impl TaskMap, limits: JointLimits) -> Result<Self, IkError> {
+        let solver = SaturatedRmrc::new(task.max_rows(), task.nv(), limits)?;
+        Ok(Self {
+            limited: Some(solver),
+            ..Self::new(task)
+        })
+    }
+
+    /// The limit-keeping solver, if any.
+    pub fn limits(&self) -> Option<&SaturatedRmrc> {
+        self.limited.as_ref()
+    }
+
     /// Joint velocities of one cycle at `q`: `xd_cmd = xd_d + K_x Delta x` (4.14b), then
-    /// (4.12) by Algorithm 4.3 (with the task map's row softness); result in `self.qdot`.
+    /// (4.12) by Algorithm 4.3 (with the task map's row softness, inside the joint limits if
+    /// given); result in `self.qdot`.
     pub fn velocities(
         &mut self,
         task: &mut impl TaskMap,
@@ -77,7 +97,12 @@ impl ClosedLoopIk {
             damping: input.damping,
             softness: task.softness(),
         };
-        self.rmrc.solve(&p, &mut self.qdot)?;
+        match &mut self.limited {
+            Some(s) => {
+                s.solve(&p, q, input.dt, &mut self.qdot)?;
+            }
+            None => self.rmrc.solve(&p, &mut self.qdot)?,
+        }
         Ok(&self.qdot)
     }
 

@@ -9,15 +9,19 @@
 //! - [`joint_cost`]: joint-limit and comfort cost H_J (Fig. 4.2).
 //! - [`orientation`]: angle-axis orientation error and Euler Z-X-Z (Appendix C).
 //! - [`blend`]: task activation ramps and null-space rate limiting (5.1).
+//! - [`limits`] + [`saturation`]: hard joint position and velocity limits kept by saturation
+//!   in the null space (SNS) around Algorithm 4.3, for any task map.
 
 pub mod blend;
 pub mod differential;
 pub mod joint_cost;
+pub mod limits;
 pub mod linalg;
 pub mod line_search;
 pub mod orientation;
 pub mod position;
 pub mod rmrc;
+pub mod saturation;
 pub mod task_map;
 pub mod weight;
 
@@ -26,7 +30,9 @@ pub use differential::{
     jacobian_transpose, AccelerationInput, ClosedLoopIk, CycleInput, ResolvedAcceleration,
 };
 pub use joint_cost::{JointCost, JointCostEntry};
+pub use limits::{JointLimits, JointRange, LimitSettings};
 pub use position::{IkReport, IkSettings, PositionIk, StopReason};
 pub use rmrc::{Rmrc, RmrcProblem};
+pub use saturation::{SaturatedRmrc, SaturationReport};
 pub use task_map::{TaskBuffers, TaskMap};
 pub use weight::Weight;

@@ -15,6 +15,20 @@ pub enum PatternError {
         /// The admissible range or rule.
         reason: &'static str,
     },
+    /// A parameter is outside the range in which the legs can walk the pattern.
+    #[error("parameter `{name}` = {value} is out of range [{min:.3}, {max:.3}]: {why}")]
+    OutOfRange {
+        /// Field name in [`PatternParams`](super::PatternParams).
+        name: &'static str,
+        /// The rejected value.
+        value: f64,
+        /// Smallest valid value for the other parameters.
+        min: f64,
+        /// Largest valid value for the other parameters.
+        max: f64,
+        /// What limits the range.
+        why: &'static str,
+    },
     /// Two foot rectangles of a double-support stance overlap.
     #[error("the feet overlap in the double support after step {step} (increase step_width)")]
     FeetOverlap {

@@ -1,4 +1,4 @@
-//! Defaults fitted to the Lola-like model: standing CoM height and hip spacing.
+//! Defaults fitted to the Lola-like model: standing CoM height, hip spacing and toe axis.
 //!
 //! The standing pose bends both knees by `knee` with hip and ankle pitch `-knee / 2` each, so
 //! the soles stay flat and parallel; all other joints are zero. The CoM height is the CoM
@@ -63,4 +63,22 @@ pub fn hip_spacing(lola: &LolaModel) -> Result<f64, PatternError> {
         Ok(data.body_pose(id).translation.y)
     };
     Ok(y("l_hip_rotation")? - y("r_hip_rotation")?)
+}
+
+/// Toe joint axis of the left foot in its sole frame at the neutral pose: `(x, z)` \[m]
+/// (the defaults `FootGeometry::front` and `toe_height`).
+pub fn toe_axis(lola: &LolaModel) -> Result<(f64, f64), PatternError> {
+    let q = lola.model.neutral();
+    let mut data = Data::new(&lola.model);
+    biped_dynamics::update_placements(&lola.model, &mut data, &q)
+        .map_err(|e| PatternError::Model(e.to_string()))?;
+    let pos = |name: &str| -> Result<nalgebra::Vector3<f64>, PatternError> {
+        let id = lola
+            .model
+            .body_id(name)
+            .ok_or_else(|| PatternError::Model(format!("no body `{name}`")))?;
+        Ok(data.body_pose(id).translation.vector)
+    };
+    let d = pos("l_toe")? - pos("l_sole")?;
+    Ok((d.x, d.z))
 }

@@ -1,13 +1,15 @@
 //! The sampled walking pattern: CoM from ZMP preview control, feet and torso.
 
+use super::feet::{Feet, RollPlan};
 use super::footsteps::{Foot, FootstepPlan};
 use super::preview::PreviewController;
+use super::roll::Contact;
 use super::swing::SoleMotion;
-use super::timeline::{midpoint, Moment, Phase, Schedule};
-use super::{PatternError, PatternParams};
-use nalgebra::{Isometry3, UnitQuaternion, Vector2, Vector3};
+use super::timeline::{midpoint, Phase, Schedule};
+use super::{FootGeometry, PatternError, PatternParams};
+use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector2, Vector3};
 
-/// Pose and spatial velocity of one sole frame (world coordinates).
+/// Pose and spatial velocity of one sole frame (world coordinates), toe joint and contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FootState {
     /// Sole frame pose (origin on the ground below the ankle when standing).
@@ -16,15 +18,38 @@ pub struct FootState {
     pub linear: Vector3<f64>,
     /// Angular velocity \[rad/s].
     pub angular: Vector3<f64>,
+    /// Toe joint angle (toe segment relative to the foot, about the lateral axis) \[rad].
+    pub toe_angle: f64,
+    /// Toe joint rate \[rad/s].
+    pub toe_rate: f64,
+    /// Contact state (toe-off, heel strike, flat, swing).
+    pub contact: Contact,
 }
 
 impl From<&SoleMotion> for FootState {
     fn from(m: &SoleMotion) -> Self {
         Self {
-            pose: m.pose.isometry(m.z),
+            pose: Isometry3::from_parts(Translation3::new(m.pose.x, m.pose.y, m.z), m.rotation()),
             linear: m.velocity,
-            angular: Vector3::new(0.0, 0.0, m.yaw_rate),
+            angular: m.angular(),
+            toe_angle: m.toe,
+            toe_rate: m.toe_rate,
+            contact: m.contact,
         }
+    }
+}
+
+impl FootState {
+    /// Pose and spatial velocity (linear, angular) of the toe segment frame: origin on the toe
+    /// joint axis (`front`, `toe_height` in the sole frame), rotated by the toe angle.
+    pub fn toe_frame(&self, foot: &FootGeometry) -> (Isometry3<f64>, Vector3<f64>, Vector3<f64>) {
+        let offset = self.pose.rotation * Vector3::new(foot.front, 0.0, foot.toe_height);
+        let rot = self.pose.rotation
+            * UnitQuaternion::from_axis_angle(&Vector3::y_axis(), self.toe_angle);
+        let pose = Isometry3::from_parts((self.pose.translation.vector + offset).into(), rot);
+        let lateral = self.pose.rotation * Vector3::y();
+        let linear = self.linear + self.angular.cross(&offset);
+        (pose, linear, self.angular + lateral * self.toe_rate)
     }
 }
 
@@ -68,6 +93,7 @@ pub struct WalkingPattern {
     params: PatternParams,
     schedule: Schedule,
     controller: PreviewController,
+    roll: RollPlan,
     samples: Vec<PatternSample>,
 }
 
@@ -89,10 +115,20 @@ impl WalkingPattern {
             let r: Vec<f64> = refs.iter().map(|p| p[i]).collect();
             controller.track(&r, &Vector3::new(start[i], 0.0, 0.0), out);
         }
+        let com = |t: f64| {
+            let k = ((t / params.dt).round() as usize).min(n - 1);
+            Vector2::new(axes[0][k][0], axes[1][k][0])
+        };
+        let roll = RollPlan::new(&schedule, params, com);
+        let feet = Feet {
+            schedule: &schedule,
+            params,
+            roll: &roll,
+        };
         let samples = (0..n)
             .map(|k| {
                 let (x, y) = (&axes[0][k], &axes[1][k]);
-                let mut s = feet_and_torso(&schedule, params, times[k]);
+                let mut s = feet_and_torso(&feet, &schedule, times[k]);
                 s.com = Vector3::new(x[0], y[0], h);
                 s.com_vel = Vector3::new(x[1], y[1], 0.0);
                 s.com_acc = Vector3::new(x[2], y[2], 0.0);
@@ -105,6 +141,7 @@ impl WalkingPattern {
             params: params.clone(),
             schedule,
             controller,
+            roll,
             samples,
         })
     }
@@ -170,6 +207,11 @@ impl WalkingPattern {
         &self.schedule.plan
     }
 
+    /// Heel-lift and toe-up angles of the steps (toe-off, heel strike).
+    pub fn roll(&self) -> &RollPlan {
+        &self.roll
+    }
+
     /// The step timing and ZMP reference.
     pub fn schedule(&self) -> &Schedule {
         &self.schedule
@@ -182,22 +224,8 @@ impl WalkingPattern {
 }
 
 /// Feet, torso, phase and step index at `t` (CoM and ZMP left zero).
-fn feet_and_torso(schedule: &Schedule, params: &PatternParams, t: f64) -> PatternSample {
-    let (feet, step) = match schedule.locate(t) {
-        Moment::Start { .. } => (standing(schedule.stance(0)), 0),
-        Moment::Single { k, tau } => {
-            let mut feet = standing(schedule.stance(k));
-            let sw = &schedule.plan.steps[k];
-            feet[sw.foot.index()] =
-                SoleMotion::swing(sw, tau, schedule.ss_time(), params.step_height);
-            (feet, k)
-        }
-        Moment::Double { k, .. } => (standing(schedule.stance(k + 1)), k + 1),
-        Moment::End => {
-            let n = schedule.plan.steps.len();
-            (standing(schedule.stance(n)), n)
-        }
-    };
+fn feet_and_torso(feet: &Feet<'_>, schedule: &Schedule, t: f64) -> PatternSample {
+    let (feet, step): ([SoleMotion; 2], usize) = feet.at(t);
     let yaw = 0.5 * (feet[0].pose.yaw + feet[1].pose.yaw);
     let yaw_rate = 0.5 * (feet[0].yaw_rate + feet[1].yaw_rate);
     PatternSample {
@@ -213,8 +241,4 @@ fn feet_and_torso(schedule: &Schedule, params: &PatternParams, t: f64) -> Patter
         phase: schedule.phase(t),
         step,
     }
-}
-
-fn standing(feet: &[super::footsteps::Pose2; 2]) -> [SoleMotion; 2] {
-    [SoleMotion::standing(feet[0]), SoleMotion::standing(feet[1])]
 }

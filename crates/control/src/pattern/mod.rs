@@ -9,6 +9,9 @@
 //! - [`preview`] + [`dare`]: cart-table ZMP preview servo (Katayama-type LQ servo with
 //!   integral action), gains from the DARE solved by doubling.
 //! - [`swing`]: minimum-jerk swing-foot trajectories with a C2 lift profile.
+//! - [`reach`]: steps within the legs' reach and step times long enough for the swing.
+//! - [`roll`]: toe-off and heel strike (heel lift about the toe joint axis at the end of
+//!   double support, heel-first landing rolling flat at its start).
 //! - [`generate`]: [`WalkingPattern`], sampled at the control period.
 //! - [`fit`]: defaults fitted to the Lola-like model (CoM height, hip spacing).
 //!
@@ -30,16 +33,21 @@
 
 pub mod dare;
 mod error;
+mod feet;
 pub mod fit;
 pub mod footsteps;
 pub mod generate;
 mod params;
 pub mod preview;
+pub mod reach;
+pub mod roll;
 pub mod swing;
 pub mod timeline;
 
 pub use error::PatternError;
+pub use feet::RollPlan;
 pub use footsteps::{Foot, Footstep, FootstepPlan, Pose2};
 pub use generate::{FootState, PatternSample, WalkingPattern};
 pub use params::{FootGeometry, PatternParams, LOLA_COM_HEIGHT, LOLA_STEP_WIDTH};
+pub use roll::{Contact, FootRoll};
 pub use timeline::Phase;

@@ -1,21 +1,26 @@
 //! Parameters of the walking pattern generator with defaults fitted to the Lola-like model.
 
-use super::PatternError;
+use super::{FootRoll, PatternError};
 use serde::{Deserialize, Serialize};
 
 /// Sole rectangle of one foot in its sole frame (x forward, y left), the support region.
 ///
 /// Defaults: the foot box of `crates/robots/data/lola.toml` (0.22 m x 0.12 m, centre 0.02 m in
-/// front of the ankle axis, which lies above the sole frame origin).
+/// front of the ankle axis, which lies above the sole frame origin) and its toe joint (axis at
+/// the front edge, 0.02 m above the sole; toe segment 0.06 m long), see `fit::toe_axis`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct FootGeometry {
-    /// Distance from the sole origin to the toe edge \[m].
+    /// Distance from the sole origin to the toe edge, the toe joint axis \[m].
     pub front: f64,
     /// Distance from the sole origin to the heel edge \[m].
     pub back: f64,
     /// Half the foot width \[m].
     pub half_width: f64,
+    /// Height of the toe joint axis above the sole plane \[m].
+    pub toe_height: f64,
+    /// Length of the toe segment ahead of its joint axis (toe-off support) \[m].
+    pub toe_length: f64,
 }
 
 impl Default for FootGeometry {
@@ -24,6 +29,8 @@ impl Default for FootGeometry {
             front: 0.13,
             back: 0.09,
             half_width: 0.06,
+            toe_height: 0.02,
+            toe_length: 0.06,
         }
     }
 }
@@ -68,6 +75,14 @@ pub struct PatternParams {
     pub input_weight: f64,
     /// Support rectangle of the feet.
     pub foot: FootGeometry,
+    /// Toe-off and heel strike (timing and angles).
+    pub roll: FootRoll,
+    /// Largest distance between consecutive footprints the legs reach \[m] (Lola-like model in
+    /// the walking posture: at 0.5 m steps, 0.53 m between the sole origins, the legs are
+    /// stretched at touch-down).
+    pub reach: f64,
+    /// Top speed of the swing foot \[m/s] (sets the shortest single support, [`super::reach`]).
+    pub max_swing_speed: f64,
 }
 
 /// Standing CoM height of the Lola-like model with 0.4 rad knee bend (`fit::standing_com_height` = 0.9603 m) \[m].
@@ -86,7 +101,7 @@ impl Default for PatternParams {
             step_width: LOLA_STEP_WIDTH,
             step_time: 0.8,
             ds_ratio: 0.2,
-            step_height: 0.06,
+            step_height: 0.05,
             com_height: LOLA_COM_HEIGHT,
             gravity: 9.81,
             dt: 1e-3,
@@ -97,6 +112,9 @@ impl Default for PatternParams {
             state_weight: 0.0,
             input_weight: 1e-6,
             foot: FootGeometry::default(),
+            roll: FootRoll::default(),
+            reach: 0.55,
+            max_swing_speed: 4.0,
         }
     }
 }
@@ -136,7 +154,8 @@ impl PatternParams {
         self.start_time + self.n_steps as f64 * self.step_time + self.end_time
     }
 
-    /// Rejects non-finite, non-positive or absurd values with a typed error.
+    /// Rejects non-finite, non-positive or absurd values, then steps beyond the legs' reach
+    /// and step times too short for the swing ([`super::reach`]), with typed errors.
     pub fn validate(&self) -> Result<(), PatternError> {
         let n = self.n_steps as f64;
         range("n_steps", n, 1.0, 1000.0, "1 to 1000 steps")?;
@@ -183,6 +202,29 @@ impl PatternParams {
             0.5,
             "0 to 0.5 m",
         )?;
+        range(
+            "foot.toe_height",
+            self.foot.toe_height,
+            0.0,
+            0.2,
+            "0 to 0.2 m",
+        )?;
+        range(
+            "foot.toe_length",
+            self.foot.toe_length,
+            0.0,
+            0.5,
+            "0 to 0.5 m",
+        )?;
+        self.roll.validate()?;
+        range("reach", self.reach, 0.05, 5.0, "0.05 to 5 m")?;
+        range(
+            "max_swing_speed",
+            self.max_swing_speed,
+            0.1,
+            50.0,
+            "0.1 to 50 m/s",
+        )?;
         let min_phase = 2.0 * self.dt;
         range(
             "ds_ratio",
@@ -206,6 +248,7 @@ impl PatternParams {
             1.0,
             1e5,
             "more than 1e5 preview samples",
-        )
+        )?;
+        super::reach::check(self)
     }
 }

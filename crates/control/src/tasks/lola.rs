@@ -9,12 +9,13 @@
 //! - upper body: error `log(A_d A_t^T)`, `J = J_w,torso`; CoG: `J = J_C`;
 //! - joint tasks: `J = e_i^T`.
 //!
-//! The foot TCP is the origin of the `*_sole` marker body; an arm CoG is the CoG of the
+//! The foot TCP is the origin of the `*_sole` marker body, or of the `*_toe` segment while
+//! the heel is lifted (`LolaTargets::foot_frame`, [`FootFrame::Toe`]); an arm CoG is the CoG of the
 //! subtree of its `*_shoulder` body (links and the rotors mounted in the arm).
 //! Inactive tasks (activation weight 0) are left out of the stack; blended tasks get the
 //! row softness of [`crate::ik::blend`].
 
-use super::targets::{LolaTargets, TaskId};
+use super::targets::{FootFrame, LolaTargets, TaskId};
 use crate::error::IkError;
 use crate::ik::blend::Activation;
 use crate::ik::orientation::orientation_error;
@@ -53,6 +54,7 @@ pub struct LolaTasks {
     cen: Centroidal,
     torso: usize,
     soles: [usize; 2],
+    toes: [usize; 2],
     arms: [Vec<(usize, Vector3<f64>, f64)>; 2],
     arm_mass: [f64; 2],
     joint_q: [usize; 7],
@@ -80,6 +82,7 @@ impl LolaTasks {
                 .ok_or_else(|| IkError::UnknownName(n.to_string()))
         };
         let (torso, soles) = (id("torso")?, [id("r_sole")?, id("l_sole")?]);
+        let toes = [id("r_toe")?, id("l_toe")?];
         let arms = [
             arm_bodies(&model, id("r_shoulder")?),
             arm_bodies(&model, id("l_shoulder")?),
@@ -101,6 +104,7 @@ impl LolaTasks {
             cen: Centroidal::new(&model),
             torso,
             soles,
+            toes,
             arms,
             arm_mass,
             joint_q,
@@ -169,6 +173,14 @@ impl LolaTasks {
         Ok(())
     }
 
+    /// Body of the TCP of foot slot `s` (0 = right, 1 = left) for its target frame.
+    fn foot_body(&self, s: usize) -> usize {
+        match self.targets.foot_frame[s] {
+            FootFrame::Sole => self.soles[s],
+            FootFrame::Toe => self.toes[s],
+        }
+    }
+
     /// CoG, foot and torso poses, arm CoGs at `q`; runs one kinematics pass for both.
     fn measure(&mut self, q: &DVector<f64>) -> Result<Measured, IkError> {
         let kin = |e: biped_dynamics::JacobianError| IkError::Kinematics(e.to_string());
@@ -188,13 +200,11 @@ impl LolaTasks {
             }
             *cog /= mass;
         }
+        let feet = [self.foot_body(0), self.foot_body(1)];
         Ok(Measured {
             cog: self.cen.com(),
-            foot_pos: [
-                self.data.world_pos[self.soles[0]],
-                self.data.world_pos[self.soles[1]],
-            ],
-            foot_rot: [pose(self.soles[0]), pose(self.soles[1])],
+            foot_pos: [self.data.world_pos[feet[0]], self.data.world_pos[feet[1]]],
+            foot_rot: [pose(feet[0]), pose(feet[1])],
             torso_rot: pose(self.torso),
             arm_cog,
         })
@@ -217,14 +227,14 @@ impl LolaTasks {
             TaskId::RightFootPosition | TaskId::LeftFootPosition => {
                 let s = (id == TaskId::LeftFootPosition) as usize;
                 self.jac
-                    .point_jacobian(self.soles[s], &zero, &mut self.j3)
+                    .point_jacobian(self.foot_body(s), &zero, &mut self.j3)
                     .map_err(kin)?;
                 put_rows(out, r, &rpt, &self.j3, 0, Some(&self.jc), 0);
                 self.targets.foot_position[s] - rpt * (m.foot_pos[s] - m.cog)
             }
             TaskId::RightFootOrientation | TaskId::LeftFootOrientation => {
                 let s = (id == TaskId::LeftFootOrientation) as usize;
-                let (sole, frame) = (self.soles[s], JacobianFrame::WorldAligned);
+                let (sole, frame) = (self.foot_body(s), JacobianFrame::WorldAligned);
                 self.jac
                     .body_jacobian(sole, frame, &mut self.j6)
                     .map_err(kin)?;

@@ -12,4 +12,4 @@ mod targets;
 
 pub use lola::LolaTasks;
 pub use pose::{lola_joint_cost, standing_configuration};
-pub use targets::{LolaTargets, TaskId};
+pub use targets::{FootFrame, LolaTargets, TaskId};

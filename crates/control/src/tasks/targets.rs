@@ -12,7 +12,8 @@ use nalgebra::{DVector, Matrix3, Vector3};
 /// One task of Table 4.2 (plus joint tasks holding the head and vergence joints).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum TaskId {
-    /// Right foot TCP (sole origin) relative to the CoG, planning frame (3).
+    /// Right foot TCP (sole or toe frame origin, [`FootFrame`]) relative to the CoG, planning
+    /// frame (3).
     RightFootPosition,
     /// Left foot TCP relative to the CoG, planning frame (3).
     LeftFootPosition,
@@ -92,14 +93,28 @@ impl TaskId {
     }
 }
 
+/// Frame of a foot task (the foot's TCP).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum FootFrame {
+    /// The sole frame (`*_sole`, below the ankle): foot flat, on its heel, or swinging.
+    #[default]
+    Sole,
+    /// The toe segment frame (`*_toe`, on the toe joint axis): while the heel is lifted and
+    /// the toe stands on the ground (toe-off); the toe joint task then sets the heel lift.
+    Toe,
+}
+
 /// Desired task values `x_d` (and feed-forward velocities) of all tasks (Table 4.2).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LolaTargets {
     /// Planned upper-body yaw defining the planning frame \[rad].
     pub planning_yaw: f64,
+    /// Frame tracked by the right, left foot tasks.
+    pub foot_frame: [FootFrame; 2],
     /// Right, left foot TCP relative to the CoG (planning frame).
     pub foot_position: [Vector3<f64>; 2],
-    /// Right, left foot orientation relative to the torso (columns = foot axes in torso axes).
+    /// Right, left foot frame orientation relative to the torso (columns = frame axes in torso
+    /// axes).
     pub foot_orientation: [Matrix3<f64>; 2],
     /// CoG in the inertial frame.
     pub cog: Vector3<f64>,
@@ -118,6 +133,7 @@ impl Default for LolaTargets {
     fn default() -> Self {
         Self {
             planning_yaw: 0.0,
+            foot_frame: [FootFrame::Sole; 2],
             foot_position: [Vector3::zeros(); 2],
             foot_orientation: [Matrix3::identity(); 2],
             cog: Vector3::zeros(),

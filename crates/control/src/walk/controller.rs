@@ -11,16 +11,21 @@ use super::posture::{
 use super::targets::{legs, set_targets};
 use crate::avoidance::{AvoidanceParams, AvoidanceSummary, CollisionAvoidance};
 use crate::ik::joint_cost::JointCost;
-use crate::ik::{Rmrc, RmrcProblem, TaskBuffers, TaskMap, Weight};
+use crate::ik::{
+    JointLimits, JointRange, RmrcProblem, SaturatedRmrc, SaturationReport, TaskBuffers, TaskMap,
+    Weight,
+};
 use crate::momentum::{
     vertical_inertia, ArmSwing, ArmSwingNominal, ArmTargets, Compensation, CompensationLaw,
     MomentumMinimisation, MomentumReference, VerticalMomentum, LOLA_ARMS,
 };
-use crate::pattern::{PatternSample, WalkingPattern};
+use crate::pattern::{FootGeometry, PatternSample, WalkingPattern};
 use crate::tasks::{lola_joint_cost, LolaTasks, TaskId};
 use biped_dynamics::{Data, Jacobians};
 use biped_robots::lola::{lola_collision_model, LolaModel};
 use nalgebra::{DVector, Vector3};
+
+mod compensate;
 
 /// What one cycle did.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -31,6 +36,8 @@ pub struct CycleInfo {
     pub error_norm: f64,
     /// Collision avoidance summary (`None` with avoidance off).
     pub avoidance: Option<AvoidanceSummary>,
+    /// Joints the solve held at their limit box (SNS).
+    pub limits: SaturationReport,
 }
 
 /// Lola's walking IK with one arm method (see [`Method`]).
@@ -78,7 +85,8 @@ pub struct WalkController {
     params: WalkParams,
     tasks: LolaTasks,
     buf: TaskBuffers,
-    rmrc: Rmrc,
+    sns: SaturatedRmrc,
+    foot: FootGeometry,
     xcmd: DVector<f64>,
     grad: DVector<f64>,
     grad_c: DVector<f64>,
@@ -170,7 +178,8 @@ impl WalkController {
             method,
             params,
             buf: TaskBuffers::new(&tasks),
-            rmrc: Rmrc::new(TaskId::TOTAL_ROWS, nv),
+            sns: SaturatedRmrc::new(TaskId::TOTAL_ROWS, nv, joint_limits(lola, &params)?)?,
+            foot: pattern.params().foot,
             xcmd: DVector::zeros(TaskId::TOTAL_ROWS),
             grad: DVector::zeros(nv),
             grad_c: DVector::zeros(nv),
@@ -229,7 +238,7 @@ impl WalkController {
         if self.method == Method::Minimization {
             self.minim.update(self.vm.jacobian_z(), &mut self.weight)?;
         }
-        self.solve()?;
+        let limits = self.solve(dt)?;
         if self.method == Method::Compensation {
             self.compensate(self.reference.sample(s.t).0)?;
         }
@@ -240,6 +249,7 @@ impl WalkController {
             rows: self.buf.rows,
             error_norm: self.buf.error_norm(),
             avoidance,
+            limits,
         })
     }
 
@@ -261,45 +271,8 @@ impl WalkController {
             let (t_step, turn) = self.step_turn;
             self.reference.start_step(s.t, t_step, turn)?;
         }
-        set_targets(s, &self.com_offset, arms.as_ref(), &mut self.tasks.targets);
-        Ok(())
-    }
-
-    /// Compensation (7.3)-(7.9) solved within the cycle: RMRC is linear in the null-space
-    /// input, so the response `qd_r` to the reducing direction `y_r = J_{L,r,z}^T` (arms
-    /// only, zero task velocity) is computed with the same factorisation, and
-    /// `qd += k s qd_r` with `s = (L_d - J_Lz qd) / (J_Lz qd_r)` sets `L_z` to
-    /// `k L_d + (1 - k) L_z` exactly, including the tasks' reaction to the arm motion (the
-    /// thesis estimates the producing momentum from the previous cycle instead, which at
-    /// 1 kHz with gain 1 oscillates). The arm speed of the term is capped at
-    /// `compensation_max_speed`.
-    fn compensate(&mut self, l_desired: f64) -> Result<(), WalkError> {
-        let jlz = self.vm.jacobian_z();
-        self.dir.fill(0.0);
-        for &i in self.comp.reducing() {
-            self.dir[i] = jlz[i];
-        }
-        self.zero_x.fill(0.0);
-        let p = RmrcProblem {
-            jacobian: &self.buf.jac,
-            rows: self.buf.rows,
-            xdot: &self.zero_x,
-            weight: &self.weight,
-            null_space: Some((&self.dir, 1.0)),
-            damping: 0.0,
-            softness: self.tasks.softness(),
-        };
-        self.rmrc.resolve(&p, &mut self.qdot_r)?;
-        let effect = jlz.dot(&self.qdot_r);
-        if effect.abs() < 1e-12 {
-            return Ok(());
-        }
-        let mut f = self.params.compensation_gain * (l_desired - jlz.dot(&self.qdot)) / effect;
-        let peak = self.qdot_r.amax() * f.abs();
-        if peak > self.params.compensation_max_speed {
-            f *= self.params.compensation_max_speed / peak;
-        }
-        self.qdot.axpy(f, &self.qdot_r, 1.0);
+        let t = &mut self.tasks.targets;
+        set_targets(s, &self.com_offset, &self.foot, arms.as_ref(), t);
         Ok(())
     }
 
@@ -313,8 +286,9 @@ impl WalkController {
         Ok(self.shoulders.map(|b| rpt * (data.world_pos[b] - c)))
     }
 
-    /// `xd_cmd = xd_d + K_x dx` (4.14b), then (4.12) by Alg. 4.3 into `qdot`.
-    fn solve(&mut self) -> Result<(), WalkError> {
+    /// `xd_cmd = xd_d + K_x dx` (4.14b), then (4.12) by Alg. 4.3 into `qdot`, inside the
+    /// joint limits (SNS) for a step `dt`.
+    fn solve(&mut self, dt: f64) -> Result<SaturationReport, WalkError> {
         let m = self.buf.rows;
         self.tasks.feedforward(&mut self.xcmd);
         for i in 0..m {
@@ -329,8 +303,7 @@ impl WalkController {
             damping: 0.0,
             softness: self.tasks.softness(),
         };
-        self.rmrc.solve(&p, &mut self.qdot)?;
-        Ok(())
+        Ok(self.sns.solve(&p, &self.q, dt, &mut self.qdot)?)
     }
 
     /// The method.
@@ -358,6 +331,11 @@ impl WalkController {
         self.vm.jacobian_z()
     }
 
+    /// The limit-keeping solver (its box and fixed joints of the last cycle).
+    pub fn limiter(&self) -> &SaturatedRmrc {
+        &self.sns
+    }
+
     /// The task set (targets, activations, model).
     pub fn tasks(&self) -> &LolaTasks {
         &self.tasks
@@ -367,4 +345,19 @@ impl WalkController {
     pub fn kinematics(&self) -> (&Data, &Jacobians) {
         self.tasks.kinematics()
     }
+}
+
+/// Hard limits of every actuated joint of `lola` with the settings of `params`.
+fn joint_limits(lola: &LolaModel, params: &WalkParams) -> Result<JointLimits, WalkError> {
+    let ranges = lola
+        .limits
+        .iter()
+        .map(|l| JointRange {
+            q_index: l.q_index,
+            v_index: l.v_index,
+            lower: l.lower,
+            upper: l.upper,
+        })
+        .collect();
+    Ok(JointLimits::new(ranges, params.limits)?)
 }

@@ -1,6 +1,7 @@
 //! Arm-motion methods compared in thesis ch. 7 and the tuning parameters of the walk IK.
 
 use super::error::WalkError;
+use crate::ik::LimitSettings;
 use std::fmt;
 use std::str::FromStr;
 
@@ -107,6 +108,8 @@ pub struct WalkParams {
     pub arm_pose: [f64; 3],
     /// Time the IK runs on the first pattern sample before the walk starts \[s].
     pub settle_time: f64,
+    /// Hard joint limits kept by the IK (margin, velocity, deceleration; [`crate::ik::limits`]).
+    pub limits: LimitSettings,
 }
 
 impl Default for WalkParams {
@@ -125,6 +128,7 @@ impl Default for WalkParams {
             minimization_delta: 0.003,
             arm_lock_weight: 1e6,
             settle_time: 0.3,
+            limits: LimitSettings::default(),
             arm_pose: [0.0, 0.1, super::posture::WALK_ELBOW],
         }
     }

@@ -24,15 +24,17 @@
 //! - Minimisation (7.5): `W = delta E + J_Lz^T J_Lz` with `delta = 0.003` (the arms' entries
 //!   of `J_Lz` are small, so a larger delta leaves most of `L_z`); the null-space steps are
 //!   scaled by delta so that `W^-1 grad H` keeps its size.
-//! - Posture: knees bent 0.9 rad so that the 0.4 m steps (0.8 m stride) of the flat-footed
-//!   pattern keep the knees out of their singularity; elbows at -0.8 rad. The flat-footed
-//!   pattern still takes the rear ankle about 0.36 rad beyond its dorsiflexion limit at the
-//!   end of double support (Lola uses toe-off, which the pattern does not model): the IK does
-//!   not enforce limits on task-determined joints; `min_joint_margin` reports it. In the
-//!   default walk the ankle flexion is beyond its -0.45 rad limit (the bent-knee posture
-//!   starts on it) in ~30-40 % of the samples, by up to 0.34 rad, and the upper-arm
-//!   abduction by up to 0.1 rad; [`dynamic`] tracks it as planned (on a plant without end
-//!   stops unless asked).
+//! - Posture: knees bent [`WALK_KNEE`] = 0.55 rad (hip height between the stance ankle's
+//!   dorsiflexion limit, which a lower hip reaches at the end of single support, and the
+//!   reach of the legs at touch-down, which a higher hip loses); elbows at -0.8 rad. The
+//!   pattern rolls the feet (toe-off, heel strike, [`crate::pattern::roll`]): while a heel is
+//!   lifted the foot tasks track the toe segment ([`crate::tasks::FootFrame::Toe`]) and the
+//!   toe joint tasks follow the pattern's toe angles.
+//! - Joint limits are hard: the RMRC solution is kept inside the velocity box of the joint
+//!   ranges (margin, velocity, deceleration: [`WalkParams::limits`]) by saturation in the null
+//!   space ([`crate::ik::saturation`]); a task that would need a joint beyond its range
+//!   yields instead (the summary's `max_task_error` and `limited_cycles` say how much and
+//!   how often). The compensation term is shortened to stay in the box.
 //! - The IK runs `settle_time` on the first sample before the walk.
 
 pub mod controller;

@@ -37,9 +37,10 @@ pub(crate) fn place_on_footprints(
     Ok(q)
 }
 
-/// Knee bend of the walking posture \[rad]: low enough that a 0.4 m step keeps the stance
-/// knee bent (at 0.5 rad the leg stretches into the knee singularity at the end of a step).
-pub const WALK_KNEE: f64 = 0.9;
+/// Knee bend of the walking posture \[rad]: with toe-off and heel strike, straight enough that
+/// the stance ankle stays inside its dorsiflexion limit at the end of single support, bent
+/// enough that the legs reach the 0.4-0.5 m steps at touch-down (see [`super`]).
+pub const WALK_KNEE: f64 = 0.55;
 
 /// Elbow angle of the walking posture \[rad]: bent, away from the stretched-arm singularity
 /// of the 3-D arm CoG task (a hanging straight arm cannot move its CoG vertically).

@@ -41,6 +41,8 @@ pub struct WalkSeries {
     pub ik_us: Vec<f64>,
     /// Task error norm before each step.
     pub task_error: Vec<f64>,
+    /// Joints the IK held at their limit box in each cycle.
+    pub limited: Vec<usize>,
     /// Angles of [`RECORDED_JOINTS`] (one row per cycle).
     pub joints: Vec<[f64; 8]>,
 }
@@ -66,6 +68,8 @@ pub struct WalkSummary {
     pub min_joint_margin: f64,
     /// Largest task error norm over the walk.
     pub max_task_error: f64,
+    /// Cycles in which the IK held at least one joint at its limit box.
+    pub limited_cycles: usize,
     /// Number of cycles.
     pub cycles: usize,
 }
@@ -138,6 +142,7 @@ pub fn run_walk(
         s.min_distance.push(m.min_distance);
         s.joint_margin.push(m.joint_margin);
         s.task_error.push(info.error_norm);
+        s.limited.push(info.limits.fixed + info.limits.clamped);
         s.joints.push(idx.map(|i| ctrl.q_eval()[i]));
     }
     let summary = summarize(&s, n);
@@ -170,6 +175,7 @@ fn summarize(s: &WalkSeries, cycles: usize) -> WalkSummary {
         ik_us_p99: pct(0.99),
         min_joint_margin: min(&s.joint_margin),
         max_task_error: peak(&s.task_error),
+        limited_cycles: s.limited.iter().filter(|&&n| n > 0).count(),
         cycles,
     }
 }

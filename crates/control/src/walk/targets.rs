@@ -9,8 +9,8 @@
 //! and corrected by the feedback gain otherwise.
 
 use crate::momentum::{ArmTargets, PointTarget};
-use crate::pattern::{Foot, PatternSample};
-use crate::tasks::{LolaTargets, TaskId};
+use crate::pattern::{Contact, Foot, FootGeometry, PatternSample};
+use crate::tasks::{FootFrame, LolaTargets, TaskId};
 use nalgebra::{Matrix3, Rotation3, Vector3};
 
 /// Pattern foot feeding [`LolaTargets`] slot `s` (0 = right, 1 = left).
@@ -38,11 +38,17 @@ pub(crate) fn legs(s: &PatternSample, com_offset: &Vector3<f64>) -> [PointTarget
     })
 }
 
-/// Writes all targets and feed-forward velocities of `s` into `t`; the arm CoG targets only if
-/// `arms` is given, the joint targets are left as they are.
+/// Joint-task slots of the toe joints in [`LolaTargets::joints`], per [`SLOT_FOOT`] slot.
+const TOE_TASK: [TaskId; 2] = [TaskId::RightToe, TaskId::LeftToe];
+
+/// Writes all targets and feed-forward velocities of `s` into `t`: foot tasks on the sole, or
+/// on the toe segment while the heel is lifted (toe-off), toe joint tasks from the pattern's
+/// toe angles; the arm CoG targets only if `arms` is given, the other joint targets are left
+/// as they are.
 pub(crate) fn set_targets(
     s: &PatternSample,
     com_offset: &Vector3<f64>,
+    foot: &FootGeometry,
     arms: Option<&ArmTargets>,
     t: &mut LolaTargets,
 ) {
@@ -51,19 +57,31 @@ pub(crate) fn set_targets(
     t.cog = s.com + com_offset;
     t.upper_body = upper;
     let at = upper.transpose();
-    let legs = legs(s, com_offset);
+    let rpt = Rotation3::from_axis_angle(&Vector3::z_axis(), t.planning_yaw)
+        .into_inner()
+        .transpose();
     let v = &mut t.velocity;
-    for (slot, foot) in SLOT_FOOT.iter().enumerate() {
-        let f = s.foot(*foot);
-        t.foot_position[slot] = legs[slot].position;
-        t.foot_orientation[slot] = at * f.pose.rotation.to_rotation_matrix().into_inner();
+    for (slot, side) in SLOT_FOOT.iter().enumerate() {
+        let f = s.foot(*side);
+        let (frame, (pose, linear, angular)) = match f.contact {
+            Contact::Toe => (FootFrame::Toe, f.toe_frame(foot)),
+            _ => (FootFrame::Sole, (f.pose, f.linear, f.angular)),
+        };
+        t.foot_frame[slot] = frame;
+        let c = s.com + com_offset;
+        t.foot_position[slot] = rpt * (pose.translation.vector - c);
+        t.foot_orientation[slot] = at * pose.rotation.to_rotation_matrix().into_inner();
         let pos_id = [TaskId::RightFootPosition, TaskId::LeftFootPosition][slot];
         let rot_id = [TaskId::RightFootOrientation, TaskId::LeftFootOrientation][slot];
-        let w = at * (f.angular - s.torso_angular);
+        let lin = rpt * (linear - s.com_vel);
+        let w = at * (angular - s.torso_angular);
         for i in 0..3 {
-            v[pos_id.full_offset() + i] = legs[slot].velocity[i];
+            v[pos_id.full_offset() + i] = lin[i];
             v[rot_id.full_offset() + i] = w[i];
         }
+        let toe = TOE_TASK[slot];
+        t.joints[toe.joint_slot().unwrap_or(0)] = f.toe_angle;
+        v[toe.full_offset()] = f.toe_rate;
     }
     for i in 0..3 {
         v[TaskId::CoG.full_offset() + i] = s.com_vel[i];

@@ -20,15 +20,13 @@
 //!   default), and the trunk inclination is fed back through the support ankles
 //!   ([`stabiliser`]); each of the two alone is not enough for the default walk, and without
 //!   the RNEA feedforward the PD alone falls too.
-//! - The rear ankle of the flat-footed pattern goes beyond its limit at the end of double
-//!   support (see [`crate::walk`]; the summary's `limit_excess` says by how much). By default
-//!   the reference is tracked as planned on a plant without end stops; `end_stops = true`
-//!   gives the plant its stops at the joint ranges ([`biped_sim::passive`]), which hold the
-//!   ankle where the pattern needs it beyond. `clamp_margin = Some(m)` clamps the reference into the limits
-//!   (shrunk by `m`) instead and the summary reports how many samples and by how much; with
-//!   `m = 0` the default walk falls in its second step (the clamped rear leg pushes the body
-//!   without toe-off, which neither the pattern nor the sole contact model has). Making the
-//!   reference feasible needs toe-off (a toe contact and a heel-lift phase in the pattern).
+//! - The reference keeps every joint inside its range (toe-off and heel strike in the
+//!   pattern, hard limits in the IK, see [`crate::walk`]): the summary's `limit_excess` is 0
+//!   for the default walk, so `end_stops = true` (the plant's stops at the joint ranges,
+//!   [`biped_sim::passive`]) and `clamp_margin = Some(m)` (the reference clamped into the
+//!   limits shrunk by `m`, reported per sample) do not change the reference itself. The sole
+//!   contact model has no toe contact: while the heel is lifted the rear foot rests on the
+//!   contact points of its front edge, below the toe joint axis.
 //! - Verdict: walked = no fall (base height never below its start minus `fall_drop`, trunk
 //!   tilt never above `max_tilt`) and forward progress `>= min_progress` of the planned
 //!   base travel.
@@ -75,8 +73,8 @@ pub struct DynamicWalkParams {
     pub stabiliser: Option<StabiliserGains>,
     /// Clamp the reference into the joint limits shrunk by this margin \[rad] (`None`: no).
     pub clamp_margin: Option<f64>,
-    /// Give the plant its end stops at the joint ranges (off by default: the flat-footed
-    /// reference goes beyond the ankle range, see the module docs).
+    /// Give the plant its end stops at the joint ranges (off by default; the reference stays
+    /// inside the ranges, see the module docs).
     pub end_stops: bool,
     /// Multibody ZMP correction iterations of the pattern (see [`mod@reference`]).
     pub zmp_iterations: usize,
