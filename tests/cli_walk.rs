@@ -96,6 +96,14 @@ fn dynamic_walk_writes_csv_plots_and_summary_entry() {
     assert!(v.get("minimization").is_none(), "only the chosen method");
     let d = &v["dynamic"];
     assert_eq!(d["walked"], serde_json::Value::Bool(true), "{d}");
+    assert_eq!(
+        d["end_stops"], true,
+        "the plant has end stops by default: {d}"
+    );
+    assert_eq!(
+        d["limit_excess"], 0.0,
+        "the reference stays inside the ranges: {d}"
+    );
     assert!(d["fell_at"].is_null());
     for key in [
         "distance",

@@ -49,10 +49,10 @@ pub struct WalkArgs {
     /// and the ankle stabiliser (for comparison; the default walk falls).
     #[arg(long, requires = "dynamic")]
     open_loop: bool,
-    /// With --dynamic: give the plant its end stops at the joint ranges (the flat-footed
-    /// pattern takes the rear ankle beyond its range, so the stops change the walk).
+    /// With --dynamic: no end stops at the joint ranges in the plant (by default the plant has
+    /// them; the planned motion stays inside the ranges).
     #[arg(long, requires = "dynamic")]
-    end_stops: bool,
+    no_end_stops: bool,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "out/walk")]
     out: PathBuf,
@@ -165,7 +165,7 @@ fn dynamic_walk(
         step_length: args.step_length,
         step_time: args.step_time,
         method,
-        end_stops: args.end_stops,
+        end_stops: !args.no_end_stops,
         ..DynamicWalkParams::default()
     };
     let p = if args.open_loop {

@@ -73,7 +73,7 @@ pub struct DynamicWalkParams {
     pub stabiliser: Option<StabiliserGains>,
     /// Clamp the reference into the joint limits shrunk by this margin \[rad] (`None`: no).
     pub clamp_margin: Option<f64>,
-    /// Give the plant its end stops at the joint ranges (off by default; the reference stays
+    /// Give the plant its end stops at the joint ranges (on by default; the reference stays
     /// inside the ranges, see the module docs).
     pub end_stops: bool,
     /// Multibody ZMP correction iterations of the pattern (see [`mod@reference`]).
@@ -102,7 +102,7 @@ impl Default for DynamicWalkParams {
             feedforward: true,
             stabiliser: Some(StabiliserGains::default()),
             clamp_margin: None,
-            end_stops: false,
+            end_stops: true,
             zmp_iterations: 2,
             hold_time: 1.0,
             fall_drop: 0.25,

@@ -75,6 +75,8 @@ pub struct DynamicWalkSummary {
     /// Largest excess of a reference angle beyond its joint range \[rad] (the end stops hold
     /// the joint at the range, so the tracking error includes it).
     pub limit_excess: f64,
+    /// The plant had end stops at the joint ranges ([`DynamicWalkParams::end_stops`]).
+    pub end_stops: bool,
 }
 
 impl DynamicWalkSummary {
@@ -128,6 +130,7 @@ impl DynamicWalkSummary {
             clamped_samples: r.clamped_samples,
             max_clamp: r.max_clamp,
             limit_excess: r.max_excess,
+            end_stops: p.end_stops,
         }
     }
 }
