@@ -361,7 +361,7 @@ proptest::proptest! {
     ) {
         for ((key, _), batch) in requests().iter().zip(batches) {
             let input: Vec<u8> = batch.iter().flat_map(|q| q.iter().chain(b"\n")).copied().collect();
-            let out = jsonl::run_bytes(&mode_args(key), &input);
+            let out = common::run_bytes(&mode_args(key), &input);
             let checked = jsonl::check_answers(&input, &out, key);
             proptest::prop_assert!(checked.is_ok(), "{}: {:?}", key, checked);
         }

@@ -136,7 +136,7 @@ fn non_utf8_line_is_an_error_and_the_rest_is_answered() {
         b"\n",
     ]
     .concat();
-    let out = jsonl::run_bytes(&["ssv", "query"], &input);
+    let out = common::run_bytes(&["ssv", "query"], &input);
     assert_eq!(out.status.code(), Some(1));
     let lines = json_lines(&out);
     assert_eq!(lines.len(), 3);
@@ -181,7 +181,7 @@ proptest::proptest! {
         batch in proptest::collection::vec(corrupted_query(), 1..40),
     ) {
         let input: Vec<u8> = batch.iter().flat_map(|q| q.iter().chain(b"\n")).copied().collect();
-        let out = jsonl::run_bytes(&["ssv", "query"], &input);
+        let out = common::run_bytes(&["ssv", "query"], &input);
         let checked = jsonl::check_answers(&input, &out, "distance");
         proptest::prop_assert!(checked.is_ok(), "{:?}", checked);
     }

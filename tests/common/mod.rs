@@ -9,6 +9,11 @@ use std::process::{Command, Output, Stdio};
 
 /// Runs `biped ARGS` with `input` on stdin.
 pub fn run(args: &[&str], input: &str) -> Output {
+    run_bytes(args, input.as_bytes())
+}
+
+/// Runs `biped ARGS` with the bytes `input` on stdin.
+pub fn run_bytes(args: &[&str], input: &[u8]) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_biped"))
         .args(args)
         .current_dir(env!("CARGO_TARGET_TMPDIR"))
@@ -17,13 +22,13 @@ pub fn run(args: &[&str], input: &str) -> Output {
         .stderr(Stdio::piped())
         .spawn()
         .expect("binary runs");
-    child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(input.as_bytes())
-        .expect("write stdin");
-    child.wait_with_output().expect("finishes")
+    let mut stdin = child.stdin.take().expect("stdin");
+    let bytes = input.to_vec();
+    // Write from a thread: the child may fill its stdout pipe before reading all its input.
+    let writer = std::thread::spawn(move || stdin.write_all(&bytes));
+    let out = child.wait_with_output().expect("finishes");
+    writer.join().expect("writer").expect("write stdin");
+    out
 }
 
 /// Every stdout line parsed as JSON.

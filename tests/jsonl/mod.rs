@@ -1,32 +1,11 @@
-//! Helpers of the JSON Lines tests of `biped ssv query` and `biped dynamics`: run the binary
-//! on raw bytes, and check that every non-blank input line got one answer or one error
-//! naming its line, with finite numbers only.
+//! Helpers of the JSON Lines tests of `biped ssv query` and `biped dynamics`: check that every
+//! non-blank input line got one answer or one error naming its line, with finite numbers only.
 
 // Each test binary uses its own subset of these helpers.
 #![allow(dead_code)]
 
 use serde_json::Value;
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
-
-/// Runs `biped ARGS` with the bytes `input` on stdin.
-pub fn run_bytes(args: &[&str], input: &[u8]) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_biped"))
-        .args(args)
-        .current_dir(env!("CARGO_TARGET_TMPDIR"))
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
-    let mut stdin = child.stdin.take().expect("stdin");
-    let bytes = input.to_vec();
-    // Write from a thread: the child may fill its stdout pipe before reading all its input.
-    let writer = std::thread::spawn(move || stdin.write_all(&bytes));
-    let out = child.wait_with_output().expect("finishes");
-    writer.join().expect("writer").expect("write stdin");
-    out
-}
+use std::process::Output;
 
 /// 1-based numbers of the lines of `input` that need an answer: all but the blank ones (a
 /// byte-order mark at the start does not count; a line that is not UTF-8 is not blank).

@@ -28,7 +28,6 @@ use super::rmrc::{Rmrc, RmrcProblem};
 use super::weight::Weight;
 use crate::error::IkError;
 use nalgebra::{DMatrix, DVector};
-use restrict::restricted;
 
 /// What the last saturated solve did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -197,22 +196,7 @@ impl SaturatedRmrc {
         let m = p.rows;
         self.xdot.rows_mut(0, m).copy_from(&p.xdot.rows(0, m));
         self.restrict_gradient(p, false);
-        let q = RmrcProblem {
-            jacobian: &self.jac,
-            rows: m,
-            xdot: &self.xdot,
-            weight: restricted(p.weight, &self.weight),
-            null_space: Some((&self.grad, 1.0)),
-            damping: p.damping + self.damping,
-            softness: p.softness,
-        };
-        self.rmrc.resolve(&q, qdot)?;
-        for (v, f) in qdot.iter_mut().zip(&self.fixed) {
-            if *f {
-                *v = 0.0;
-            }
-        }
-        Ok(())
+        self.run_restricted(p, qdot, false)
     }
 
     /// Holds joint `i` (v index) at the box edge nearer to `value` in the next

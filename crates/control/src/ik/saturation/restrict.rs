@@ -34,19 +34,35 @@ impl SaturatedRmrc {
         }
         self.restrict_weight(p.weight);
         self.restrict_gradient(p, true);
+        self.run_restricted(p, qdot, true)
+    }
+
+    /// Solves the restricted problem held in `jac`, `xdot`, `weight` and `grad` (`fresh`:
+    /// factorised anew; else with the last factorisation, [`crate::ik::rmrc::Rmrc::resolve`])
+    /// and sets the fixed joints' velocities (their held value; 0 for a re-solve, whose
+    /// right-hand side is a response).
+    pub(super) fn run_restricted(
+        &mut self,
+        p: &RmrcProblem<'_>,
+        qdot: &mut DVector<f64>,
+        fresh: bool,
+    ) -> Result<(), IkError> {
         let q = RmrcProblem {
             jacobian: &self.jac,
-            rows: m,
+            rows: p.rows,
             xdot: &self.xdot,
             weight: restricted(p.weight, &self.weight),
             null_space: Some((&self.grad, 1.0)),
             damping: p.damping + self.damping,
             softness: p.softness,
         };
-        self.rmrc.solve(&q, qdot)?;
+        match fresh {
+            true => self.rmrc.solve(&q, qdot)?,
+            false => self.rmrc.resolve(&q, qdot)?,
+        }
         for (i, f) in self.fixed.iter().enumerate() {
             if *f {
-                qdot[i] = self.value[i];
+                qdot[i] = if fresh { self.value[i] } else { 0.0 };
             }
         }
         Ok(())
@@ -119,7 +135,7 @@ impl SaturatedRmrc {
 
 /// The weight of a restricted solve: the buffer for a rank-one weight, else the weight itself
 /// (a diagonal weight needs no change once the fixed columns and gradient entries are 0).
-pub(super) fn restricted<'a>(w: &'a Weight, buf: &'a Weight) -> &'a Weight {
+fn restricted<'a>(w: &'a Weight, buf: &'a Weight) -> &'a Weight {
     match w {
         Weight::DiagonalRankOne { .. } => buf,
         _ => w,
