@@ -298,6 +298,8 @@ pub mod walk {
     pub const STEP_LENGTH: Quantity = real("--step-length", "", -0.6, 0.6, "m");
     /// `--step-time`.
     pub const STEP_TIME: Quantity = real("--step-time", "", 0.2, 5.0, "s");
+    /// `--friction`.
+    pub const FRICTION: Quantity = real("--friction", "", 0.05, 3.0, "");
 }
 
 #[cfg(test)]

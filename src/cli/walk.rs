@@ -17,7 +17,6 @@ use biped_sim::Recorder;
 use clap::Args;
 use serde_json::{Map, Value};
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 
 mod report;
 
@@ -53,6 +52,16 @@ pub struct WalkArgs {
     /// them; the planned motion stays inside the ranges).
     #[arg(long, requires = "dynamic")]
     no_end_stops: bool,
+    /// Coulomb coefficient of the ground that the friction verdict checks the planned ground
+    /// wrench against (0.05 to 3).
+    #[arg(long, value_name = "MU", default_value_t = 0.8, allow_hyphen_values = true,
+          value_parser = |s: &str| range::walk::FRICTION.parse(s))]
+    friction: f64,
+    /// Report a walk that leaves the joint ranges, lets segments interpenetrate or needs more
+    /// friction than the ground has as a warning and exit 0 (for exploration); by default
+    /// such a walk exits non-zero.
+    #[arg(long)]
+    allow_violations: bool,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "out/walk")]
     out: PathBuf,
@@ -82,15 +91,19 @@ pub fn run(args: WalkArgs) -> CliResult {
             return Err(format!("{reason}{note}").into());
         }
     };
+    let violations = report::violation_lines(&runs);
+    summary.insert("violations".into(), serde_json::to_value(&violations)?);
     outdir::stamp(&mut summary, Status::Completed);
     outdir::write_json(&out.path().join("summary.json"), &Value::Object(summary))?;
     out.commit()?;
     report::print(&args, &lola, &runs, dynamic.as_ref())?;
     outln!("wrote {}", args.out.display())?;
-    match dynamic.map(|(_, r)| r.summary) {
-        Some(s) if !s.walked => Err(verdict_error(&s).into()),
-        _ => Ok(ExitCode::SUCCESS),
+    if let Some(s) = dynamic.as_ref().map(|(_, r)| &r.summary) {
+        if !s.walked {
+            return Err(verdict_error(s).into());
+        }
     }
+    report::violations(&runs, args.allow_violations)
 }
 
 /// Error of a walk stopped by SIGINT / SIGTERM between two of its parts.
@@ -122,9 +135,14 @@ fn walk_all(
             runs.len() + 1,
             methods.len()
         ));
-        let run = run_walk(lola, pattern, m, WalkParams::default())?;
+        let params = WalkParams {
+            friction: args.friction,
+            ..WalkParams::default()
+        };
+        let run = run_walk(lola, pattern, m, params)?;
         write_csv(&run, &dir.join(format!("{m}.csv")))?;
-        summary.insert(m.name().to_string(), serde_json::to_value(run.summary)?);
+        write_trajectory(&run, &dir.join(format!("{m}_trajectory.csv")))?;
+        summary.insert(m.name().to_string(), serde_json::to_value(&run.summary)?);
         runs.push(run);
     }
     report::progress("");
@@ -252,7 +270,25 @@ fn write_csv(run: &WalkRun, path: &Path) -> Result<(), Box<dyn std::error::Error
         rec.set("dL_z", s.dlz[k])?;
         rec.set("tau_z", s.tau_z[k])?;
         rec.set("min_distance", s.min_distance[k])?;
+        rec.set("friction_usage", s.friction_usage[k])?;
+        rec.set("zmp_x", s.zmp[k][0])?;
+        rec.set("zmp_y", s.zmp[k][1])?;
         for (name, v) in RECORDED_JOINTS.iter().zip(s.joints[k]) {
+            rec.set(name, v)?;
+        }
+    }
+    rec.write_csv(path)?;
+    Ok(())
+}
+
+/// The full motion of one method (`METHOD_trajectory.csv`, see docs/walking.md).
+fn write_trajectory(run: &WalkRun, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    let tr = &run.trajectory;
+    let columns = tr.columns();
+    let mut rec = Recorder::with_capacity(tr.len());
+    for k in 0..tr.len() {
+        rec.sample(tr.t[k])?;
+        for (name, v) in columns.iter().zip(tr.row(k)) {
             rec.set(name, v)?;
         }
     }

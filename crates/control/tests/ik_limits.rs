@@ -27,13 +27,15 @@ fn ranges(n: usize, lo: f64, hi: f64) -> Vec<JointRange> {
 fn velocity_box_brakes_before_the_bound_and_recovers_beyond_it() {
     let s = LimitSettings::default();
     let limits = JointLimits::new(ranges(4, -1.0, 1.0), s).unwrap();
-    let q = DVector::from_vec(vec![0.0, 1.0 - s.margin - 1e-4, 1.0 - s.margin, 1.2]);
+    let q = DVector::from_vec(vec![0.0, 1.0 - s.margin - 1e-2, 1.0 - s.margin, 1.2]);
     let (mut lo, mut hi) = (DVector::zeros(4), DVector::zeros(4));
     limits.velocity_box(&q, 1e-3, &mut lo, &mut hi);
     assert_eq!((lo[0], hi[0]), (-s.max_velocity, s.max_velocity));
-    // 0.1 mm left: the discrete braking curve (sqrt(a^2 dt^2 + 8 a d) - a dt) / 2
+    // 1 cm left: the discrete braking curve (sqrt(a^2 dt^2 + 8 a d) - a dt) / 2, below both
+    // the velocity limit and the no-overshoot speed d / dt
     let (a, dt) = (s.max_deceleration, 1e-3);
-    let vb = 0.5 * ((a * a * dt * dt + 8.0 * a * 1e-4).sqrt() - a * dt);
+    let vb = 0.5 * ((a * a * dt * dt + 8.0 * a * 1e-2).sqrt() - a * dt);
+    assert!(vb < s.max_velocity && vb < 1e-2 / dt);
     assert!((hi[1] - vb).abs() < 1e-12, "{} vs {vb}", hi[1]);
     assert_eq!(lo[1], -s.max_velocity);
     assert_eq!(hi[2], 0.0);

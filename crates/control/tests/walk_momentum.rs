@@ -18,7 +18,7 @@ fn walk(method: Method) -> WalkSummary {
 #[test]
 fn methods_meet_the_momentum_targets() {
     let [none, reference, compensation, minimization] = Method::ALL.map(walk);
-    for s in [none, reference, compensation, minimization] {
+    for s in [&none, &reference, &compensation, &minimization] {
         assert!(s.max_task_error < 0.02, "task error {}", s.max_task_error);
         // every segment pair stays apart (joint margins are not checked: the flat-footed
         // pattern takes the rear ankle past its dorsiflexion limit, see the walk module docs)

@@ -2,10 +2,12 @@
 //! then its numbers), the verdicts on joint limits and self-collision, and the dynamic walk.
 
 use super::WalkArgs;
-use crate::cli::out::{self, outln};
-use biped_control::walk::{DynamicWalkRun, Method, WalkRun};
+use crate::cli::out::{self, errln, outln};
+use crate::cli::CliResult;
+use biped_control::walk::{DynamicWalkRun, Method, Verdict, WalkRun, WalkVerdicts};
 use biped_robots::lola::LolaModel;
 use std::io::{self, IsTerminal};
+use std::process::ExitCode;
 
 /// A progress line on a terminal's stderr, overwritten by the next (`""` clears it); nothing
 /// when stderr is a file or pipe.
@@ -49,40 +51,82 @@ pub fn print(
     Ok(())
 }
 
-/// Whether the walks kept the joint ranges and stayed clear of self-collision.
+/// One verdict line: its name, which verdict, the words for kept and not kept.
+type Check = (&'static str, fn(&WalkVerdicts) -> &Verdict, &'static str, &'static str);
+
+/// Whether the walks kept the joint ranges, stayed clear of self-collision and inside the
+/// friction cone: one line per check over all methods.
 fn verdicts(runs: &[WalkRun]) -> io::Result<()> {
-    let worst = |f: fn(&WalkRun) -> f64| {
-        runs.iter()
-            .map(|r| (f(r), r.method))
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-    };
-    if let Some((margin, method)) = worst(|r| r.summary.min_joint_margin) {
-        let bad: Vec<&str> = runs
+    let checks: [Check; 4] = [
+        ("tracking", |v| &v.tracking, "kept", "MISSED"),
+        ("joint limits", |v| &v.joint_limits, "kept", "LEFT"),
+        (
+            "self-collision",
+            |v| &v.self_collision,
+            "none",
+            "INTERPENETRATE",
+        ),
+        ("friction", |v| &v.friction, "kept", "EXCEEDED"),
+    ];
+    for (name, pick, good, bad) in checks {
+        let failed: Vec<&str> = runs
             .iter()
-            .filter(|r| r.summary.min_joint_margin < 0.0)
+            .filter(|r| !pick(&r.summary.verdicts).kept)
             .map(|r| r.method.name())
             .collect();
-        match bad.is_empty() {
-            true => outln!("joint limits: kept (smallest margin {margin:.3} rad, {method})")?,
-            false => outln!(
-                "joint limits: LEFT by up to {:.3} rad ({})",
-                -margin,
-                bad.join(", ")
-            )?,
-        }
-    }
-    if let Some((d, method)) = worst(|r| r.summary.min_distance) {
-        match d > 0.0 {
-            true => outln!("self-collision: none (smallest segment distance {d:.4} m, {method})")?,
-            false => outln!(
-                "self-collision: segments INTERPENETRATE by {:.4} m ({method})",
-                -d
-            )?,
+        let worst = runs.iter().map(|r| (pick(&r.summary.verdicts), r.method));
+        let worst = match name {
+            "friction" | "tracking" => worst.max_by(|a, b| a.0.value.total_cmp(&b.0.value)),
+            _ => worst.min_by(|a, b| a.0.value.total_cmp(&b.0.value)),
+        };
+        let Some((v, method)) = worst else {
+            continue;
+        };
+        let what = match name {
+            "joint limits" => format!("smallest margin {:.3} rad, {}", v.value, v.at),
+            "self-collision" => format!("smallest segment distance {:.4} m, {}", v.value, v.at),
+            "tracking" => format!("largest task error {:.4}", v.value),
+            _ => format!("largest use of the friction limit {:.0} %", 100.0 * v.value),
+        };
+        match failed.is_empty() {
+            true => outln!("{name}: {good} ({what}, {method})")?,
+            false => outln!("{name}: {bad} by {} ({what}, {method})", failed.join(", "))?,
         }
     }
     Ok(())
 }
 
+/// Every limit the walks did not keep, one line each (method, quantity, where, when, how
+/// much); also the `"violations"` list of `summary.json`.
+pub fn violation_lines(runs: &[WalkRun]) -> Vec<String> {
+    runs.iter()
+        .flat_map(|r| {
+            r.summary
+                .verdicts
+                .violations()
+                .into_iter()
+                .map(move |v| format!("{} walk: {v}", r.method))
+        })
+        .collect()
+}
+
+/// Exit status of the walks: the first violated limit as the error, or with `allow` each
+/// violation as a warning and success.
+pub fn violations(runs: &[WalkRun], allow: bool) -> CliResult {
+    let lines = violation_lines(runs);
+    if !allow {
+        return match lines.first() {
+            Some(first) => {
+                Err(format!("{first} (--allow-violations to accept such a walk)").into())
+            }
+            None => Ok(ExitCode::SUCCESS),
+        };
+    }
+    for v in lines {
+        errln!("warning: {v}");
+    }
+    Ok(ExitCode::SUCCESS)
+}
 /// The dynamic walk's line.
 fn dynamic_line(method: Method, run: &DynamicWalkRun) -> io::Result<()> {
     let s = &run.summary;

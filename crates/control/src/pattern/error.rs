@@ -16,7 +16,7 @@ pub enum PatternError {
         reason: &'static str,
     },
     /// A parameter is outside the range in which the legs can walk the pattern.
-    #[error("parameter `{name}` = {value} is out of range [{min:.3}, {max:.3}]: {why}")]
+    #[error("parameter `{name}` = {value} is out of range [{}, {}]: {why}", inward(*min, f64::ceil), inward(*max, f64::floor))]
     OutOfRange {
         /// Field name in [`PatternParams`](super::PatternParams).
         name: &'static str,
@@ -53,4 +53,10 @@ pub enum PatternError {
     /// The robot model needed for a fitted default failed.
     #[error("robot model: {0}")]
     Model(String),
+}
+
+/// `x` rounded to 3 decimals towards the inside of its range (`round` = ceil for a lower
+/// bound, floor for an upper one), so that the printed bounds are themselves valid.
+fn inward(x: f64, round: fn(f64) -> f64) -> String {
+    format!("{:.3}", round(x * 1e3) / 1e3)
 }

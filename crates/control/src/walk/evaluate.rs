@@ -9,13 +9,15 @@
 //! (the free joint transmits it from the world). Only the ground can supply it, so it is
 //! shifted to the stance sole point `p`: `M_p = R m + (o - p) x R f`, `tau_z = M_p,z`. In
 //! double support the total wrench is reported about the midpoint of the two soles (how it
-//! splits between the feet is not determined by the kinematics).
+//! splits between the feet is not determined by the kinematics). The same wrench gives the
+//! friction load of [`super::friction`].
 
 use super::controller::WalkController;
 use super::error::{model_err, WalkError};
+use super::friction::{FrictionLoad, Support};
 use crate::avoidance::{AvoidanceParams, CollisionAvoidance};
 use crate::momentum::LzRate;
-use crate::pattern::{Foot, Phase};
+use crate::pattern::{Foot, FootGeometry, PatternSample};
 use biped_dynamics::{inverse_dynamics, Data, JointModel, Model};
 use biped_robots::lola::{lola_collision_model, LolaModel};
 use nalgebra::{DVector, Vector3};
@@ -33,6 +35,16 @@ pub struct CycleMetrics {
     pub min_distance: f64,
     /// Smallest distance of a joint to its nearer limit \[rad or m].
     pub joint_margin: f64,
+    /// Index (into [`Evaluator::joint_name`]) of the joint with that margin.
+    pub worst_joint: usize,
+    /// Index (into [`Evaluator::pair_name`]) of the closest segment pair, if any.
+    pub closest_pair: Option<usize>,
+    /// Ground wrench at the stance sole point (double support: sole midpoint): force \[N].
+    pub force: Vector3<f64>,
+    /// ... and moment about that point \[N m] (world axes).
+    pub moment: Vector3<f64>,
+    /// Friction load of that wrench on the planned support.
+    pub friction: FrictionLoad,
 }
 
 /// Preallocated evaluator (own dynamics workspace and collision model).
@@ -48,10 +60,15 @@ pub struct Evaluator {
     root: usize,
     soles: [usize; 2],
     limits: Vec<(usize, f64, f64)>,
+    names: Vec<String>,
+    support: Support,
+    geometry: FootGeometry,
+    mu: f64,
 }
 
 impl Evaluator {
-    /// Evaluator for `lola` with control period `dt`.
+    /// Evaluator for `lola` with control period `dt`, the default sole geometry and the
+    /// friction coefficient of the contact simulation's default ground.
     pub fn new(lola: &LolaModel, dt: f64) -> Result<Self, WalkError> {
         let model = &lola.model;
         let segments = lola_collision_model(lola).map_err(model_err)?.model;
@@ -72,14 +89,59 @@ impl Evaluator {
                 .iter()
                 .map(|l| (l.q_index, l.lower, l.upper))
                 .collect(),
+            names: lola.limits.iter().map(|l| l.name.clone()).collect(),
+            support: Support::new(),
+            geometry: FootGeometry::default(),
+            mu: biped_sim::contact::ContactParams::default().friction,
         })
     }
 
-    /// Metrics of the cycle `ctrl` has just run, in support phase `phase`.
+    /// The same with the sole geometry `geometry` and the ground's Coulomb coefficient `mu`
+    /// for the friction load.
+    pub fn with_ground(self, geometry: FootGeometry, mu: f64) -> Result<Self, WalkError> {
+        if !(mu.is_finite() && mu > 0.0) {
+            return Err(WalkError::InvalidParameter {
+                name: "friction",
+                reason: format!("{mu} must be finite and > 0"),
+            });
+        }
+        Ok(Self {
+            geometry,
+            mu,
+            ..self
+        })
+    }
+
+    /// Body ids of the sole frames `[left, right]`.
+    pub fn soles(&self) -> [usize; 2] {
+        self.soles
+    }
+
+    /// Coulomb coefficient of the friction load.
+    pub fn mu(&self) -> f64 {
+        self.mu
+    }
+
+    /// Name of the joint `i` of [`CycleMetrics::worst_joint`].
+    pub fn joint_name(&self, i: usize) -> &str {
+        self.names.get(i).map_or("?", String::as_str)
+    }
+
+    /// Names of the segments of pair `i` of [`CycleMetrics::closest_pair`], "a and b".
+    pub fn pair_name(&self, i: usize) -> String {
+        let model = self.distances.collision_model();
+        let segments = model.segments();
+        match model.pairs().get(i) {
+            Some(p) => format!("{} and {}", segments[p.a].name(), segments[p.b].name()),
+            None => "?".to_string(),
+        }
+    }
+
+    /// Metrics of the cycle `ctrl` has just run for pattern sample `sample`.
     pub fn evaluate(
         &mut self,
         ctrl: &WalkController,
-        phase: Phase,
+        sample: &PatternSample,
     ) -> Result<CycleMetrics, WalkError> {
         let (q, qdot) = (ctrl.q_eval(), ctrl.qdot());
         let lz = ctrl.jlz().dot(qdot);
@@ -92,37 +154,45 @@ impl Evaluator {
         self.started = true;
         self.qdot_prev.copy_from(qdot);
         let (kin, _) = ctrl.kinematics();
-        let point = match phase.stance_foot() {
+        let point = match sample.phase.stance_foot() {
             Some(Foot::Left) => kin.world_pos[self.soles[0]],
             Some(Foot::Right) => kin.world_pos[self.soles[1]],
             None => 0.5 * (kin.world_pos[self.soles[0]] + kin.world_pos[self.soles[1]]),
         };
         let model = ctrl.tasks().model();
-        let (_, m) = wrench(
-            model,
-            &mut self.data,
-            self.root,
-            (q, qdot, &self.qdd),
-            &point,
-        )?;
-        let tau_z = m.z;
+        let state = (q, qdot, &self.qdd);
+        let (force, moment) = wrench(model, &mut self.data, self.root, state, &point)?;
+        self.support.update(&sample.feet, &self.geometry);
+        let friction = self.support.load(&force, &moment, &point, self.mu);
         self.distances.update(kin)?;
-        let min_distance = self
-            .distances
-            .global_minimum()
-            .map_or(f64::INFINITY, |(_, c)| c.result.distance);
-        let joint_margin = self
-            .limits
-            .iter()
-            .map(|&(i, lo, hi)| (q[i] - lo).min(hi - q[i]))
-            .fold(f64::INFINITY, f64::min);
+        let closest = self.distances.global_minimum();
+        let (joint_margin, worst_joint) = self.margin(q);
         Ok(CycleMetrics {
             lz,
             dlz,
-            tau_z,
-            min_distance,
+            tau_z: moment.z,
+            min_distance: closest
+                .as_ref()
+                .map_or(f64::INFINITY, |(_, c)| c.result.distance),
             joint_margin,
+            worst_joint,
+            closest_pair: closest.map(|(i, _)| i),
+            force,
+            moment,
+            friction,
         })
+    }
+
+    /// Smallest joint-limit margin at `q` and the index of its joint.
+    fn margin(&self, q: &DVector<f64>) -> (f64, usize) {
+        self.limits
+            .iter()
+            .map(|&(i, lo, hi)| (q[i] - lo).min(hi - q[i]))
+            .enumerate()
+            .fold((f64::INFINITY, 0), |best, (k, m)| match m < best.0 {
+                true => (m, k),
+                false => best,
+            })
     }
 
     /// Total external wrench at `(q, v, a)` as (force, moment about `point`) in world axes:

@@ -110,6 +110,12 @@ pub struct WalkParams {
     pub settle_time: f64,
     /// Hard joint limits kept by the IK (margin, velocity, deceleration; [`crate::ik::limits`]).
     pub limits: LimitSettings,
+    /// Coulomb coefficient of the ground the friction verdict checks the planned ground
+    /// wrench against ([`super::friction`]; default: the contact simulation's ground).
+    pub friction: f64,
+    /// Largest norm of the IK's task error (m for positions, rad for orientations) with which
+    /// the walk still counts as the planned one (the tracking verdict).
+    pub task_tolerance: f64,
 }
 
 impl Default for WalkParams {
@@ -129,6 +135,8 @@ impl Default for WalkParams {
             arm_lock_weight: 1e6,
             settle_time: 0.3,
             limits: LimitSettings::default(),
+            friction: biped_sim::contact::ContactParams::default().friction,
+            task_tolerance: 0.02,
             arm_pose: [0.0, 0.1, super::posture::WALK_ELBOW],
         }
     }
@@ -147,6 +155,8 @@ impl WalkParams {
             ("gain", self.gain),
             ("minimization_delta", self.minimization_delta),
             ("arm_lock_weight", self.arm_lock_weight),
+            ("friction", self.friction),
+            ("task_tolerance", self.task_tolerance),
             ("dt", dt),
         ];
         for (name, v) in pos {

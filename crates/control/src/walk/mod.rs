@@ -4,7 +4,10 @@
 //!   `compensation` 7.3.2, `minimization` 7.5) and the tuning [`WalkParams`].
 //! - [`controller`]: [`WalkController`], one 1 kHz IK cycle (preallocated).
 //! - [`evaluate`]: per-cycle metrics: `L_z`, `dL_z/dt`, stance-foot torque `tau_z` by RNEA,
-//!   smallest SSV distance, joint-limit margin.
+//!   smallest SSV distance, joint-limit margin, ground wrench.
+//! - [`friction`]: whether the ground can supply that wrench (friction cone and free moment).
+//! - [`trajectory`]: [`Trajectory`], the full planned motion for replay.
+//! - [`verdict`]: [`WalkVerdicts`], where and when a walk came closest to each limit.
 //! - [`run`]: [`run_walk`], a whole walk with time series and a [`WalkSummary`].
 //! - [`dynamic`]: [`run_dynamic_walk`], the walk tracked by joint controllers in the contact
 //!   simulation of `biped_sim` (`biped walk --dynamic`).
@@ -41,10 +44,13 @@ pub mod controller;
 pub mod dynamic;
 mod error;
 pub mod evaluate;
+pub mod friction;
 pub mod method;
 mod posture;
 pub mod run;
 mod targets;
+pub mod trajectory;
+pub mod verdict;
 
 pub use controller::{CycleInfo, WalkController};
 pub use dynamic::{run_dynamic_walk, DynamicWalkParams, DynamicWalkRun, DynamicWalkSummary};
@@ -53,3 +59,5 @@ pub use evaluate::{CycleMetrics, Evaluator};
 pub use method::{Method, WalkParams};
 pub use posture::{walk_pattern_params, walk_start_configuration, WALK_ELBOW, WALK_KNEE};
 pub use run::{run_walk, WalkRun, WalkSeries, WalkSummary};
+pub use trajectory::Trajectory;
+pub use verdict::{Verdict, Violation, WalkVerdicts};

@@ -2,10 +2,12 @@
 
 use super::controller::WalkController;
 use super::error::{model_err, WalkError};
-use super::evaluate::Evaluator;
+use super::evaluate::{CycleMetrics, Evaluator};
 use super::method::{Method, WalkParams};
+use super::trajectory::Trajectory;
+use super::verdict::WalkVerdicts;
 use crate::momentum::LOLA_ARMS;
-use crate::pattern::WalkingPattern;
+use crate::pattern::{Foot, PatternSample, WalkingPattern};
 use biped_robots::lola::LolaModel;
 use serde::Serialize;
 use std::time::Instant;
@@ -41,6 +43,10 @@ pub struct WalkSeries {
     pub ik_us: Vec<f64>,
     /// Task error norm before each step.
     pub task_error: Vec<f64>,
+    /// Friction usage of the ground wrench ([`super::friction`]).
+    pub friction_usage: Vec<f64>,
+    /// Centre of pressure (ZMP) of the ground wrench \[m].
+    pub zmp: Vec<[f64; 2]>,
     /// Joints the IK held at their limit box in each cycle.
     pub limited: Vec<usize>,
     /// Angles of [`RECORDED_JOINTS`] (one row per cycle).
@@ -48,7 +54,7 @@ pub struct WalkSeries {
 }
 
 /// Summary of one walk (keys of `summary.json`; SI units, distances in m).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct WalkSummary {
     /// `max |L_z|` \[N m s].
     #[serde(rename = "peak_abs_Lz")]
@@ -70,8 +76,12 @@ pub struct WalkSummary {
     pub max_task_error: f64,
     /// Cycles in which the IK held at least one joint at its limit box.
     pub limited_cycles: usize,
+    /// Largest friction usage of the ground wrench (kept: `<= 1`).
+    pub peak_friction_usage: f64,
     /// Number of cycles.
     pub cycles: usize,
+    /// Joint limits, self-collision and friction: kept or not, where and when.
+    pub verdicts: WalkVerdicts,
 }
 
 /// Result of [`run_walk`].
@@ -83,6 +93,8 @@ pub struct WalkRun {
     pub series: WalkSeries,
     /// Summary.
     pub summary: WalkSummary,
+    /// The full motion (every coordinate, CoM, ZMP, soles, ground wrench).
+    pub trajectory: Trajectory,
 }
 
 /// Runs the IK over every sample of `pattern` with `method` and evaluates each cycle.
@@ -120,7 +132,8 @@ pub fn run_walk(
 ) -> Result<WalkRun, WalkError> {
     let dt = pattern.params().dt;
     let mut ctrl = WalkController::new(lola, method, params, pattern)?;
-    let mut eval = Evaluator::new(lola, dt)?;
+    let mut eval = Evaluator::new(lola, dt)?.with_ground(pattern.params().foot, params.friction)?;
+    let mut verdicts = WalkVerdicts::new(eval.mu());
     let joints = RECORDED_JOINTS.map(|n| lola.limits.iter().find(|l| l.name == n));
     let mut idx = [0; 8];
     for (i, j) in idx.iter_mut().zip(joints) {
@@ -130,31 +143,80 @@ pub fn run_walk(
     }
     let n = pattern.len();
     let mut s = WalkSeries::default();
+    let mut trajectory = Trajectory::with_capacity(lola.model.q_names(), n);
+    let soles = eval.soles();
     for sample in pattern.iter() {
         let start = Instant::now();
         let info = ctrl.cycle(sample, dt)?;
         s.ik_us.push(start.elapsed().as_secs_f64() * 1e6);
-        let m = eval.evaluate(&ctrl, sample.phase)?;
+        let m = eval.evaluate(&ctrl, sample)?;
+        record_verdicts(&mut verdicts, &eval, sample, &m);
+        verdicts.tracking(sample.t, info.error_norm, params.task_tolerance, || {
+            held_joints(lola, &ctrl)
+        });
         s.t.push(sample.t);
         s.lz.push(m.lz);
         s.dlz.push(m.dlz);
         s.tau_z.push(m.tau_z);
         s.min_distance.push(m.min_distance);
         s.joint_margin.push(m.joint_margin);
+        s.friction_usage.push(m.friction.usage);
+        s.zmp.push([m.friction.cop.x, m.friction.cop.y]);
         s.task_error.push(info.error_norm);
         s.limited.push(info.limits.fixed + info.limits.clamped);
         s.joints.push(idx.map(|i| ctrl.q_eval()[i]));
+        trajectory.push(sample.t, &ctrl, &m, soles);
     }
-    let summary = summarize(&s, n);
+    let summary = summarize(&s, n, verdicts);
     Ok(WalkRun {
         method,
         series: s,
         summary,
+        trajectory,
     })
 }
 
+/// Adds one evaluated cycle to the verdicts.
+fn record_verdicts(
+    v: &mut WalkVerdicts,
+    eval: &Evaluator,
+    sample: &PatternSample,
+    m: &CycleMetrics,
+) {
+    let t = sample.t;
+    v.joint(t, m.joint_margin, || {
+        eval.joint_name(m.worst_joint).to_string()
+    });
+    if let Some(pair) = m.closest_pair {
+        v.distance(t, m.min_distance, || eval.pair_name(pair));
+    }
+    v.friction(t, m.friction.usage, || {
+        match sample.phase.stance_foot() {
+            Some(Foot::Left) => "left foot",
+            Some(Foot::Right) => "right foot",
+            None => "double support",
+        }
+        .to_string()
+    });
+}
+
+/// The joints the IK held at their limit box in the last cycle, for the tracking verdict.
+fn held_joints(lola: &LolaModel, ctrl: &WalkController) -> String {
+    let fixed = ctrl.limiter().fixed();
+    let names: Vec<&str> = lola
+        .limits
+        .iter()
+        .filter(|l| fixed.get(l.v_index).copied().unwrap_or(false))
+        .map(|l| l.name.as_str())
+        .collect();
+    match names.is_empty() {
+        true => "no joint at its limit box".to_string(),
+        false => format!("held at the limit box: {}", names.join(", ")),
+    }
+}
+
 /// Peaks, minima and timing percentiles of a series.
-fn summarize(s: &WalkSeries, cycles: usize) -> WalkSummary {
+fn summarize(s: &WalkSeries, cycles: usize, verdicts: WalkVerdicts) -> WalkSummary {
     let peak = |v: &[f64]| v.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
     let min = |v: &[f64]| v.iter().copied().fold(f64::INFINITY, f64::min);
     let mut us = s.ik_us.clone();
@@ -176,6 +238,8 @@ fn summarize(s: &WalkSeries, cycles: usize) -> WalkSummary {
         min_joint_margin: min(&s.joint_margin),
         max_task_error: peak(&s.task_error),
         limited_cycles: s.limited.iter().filter(|&&n| n > 0).count(),
+        peak_friction_usage: s.friction_usage.iter().copied().fold(0.0, f64::max),
         cycles,
+        verdicts,
     }
 }
