@@ -35,13 +35,14 @@ fn flat_support() -> Support {
     s
 }
 
-/// Mean distance from `c` over the sole rectangle by a 400 x 400 midpoint rule.
+/// Mean distance from `c` over the sole rectangle with its toe segment, by a 400 x 400 midpoint
+/// rule.
 fn mean_distance(g: &FootGeometry, c: Vector2<f64>) -> f64 {
     let n = 400;
     let mut sum = 0.0;
     for i in 0..n {
         for j in 0..n {
-            let x = -g.back + (g.front + g.back) * (i as f64 + 0.5) / n as f64;
+            let x = -g.back + (g.front + g.toe_length + g.back) * (i as f64 + 0.5) / n as f64;
             let y = -g.half_width + 2.0 * g.half_width * (j as f64 + 0.5) / n as f64;
             sum += (Vector2::new(x, y) - c).norm();
         }

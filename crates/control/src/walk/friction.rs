@@ -11,8 +11,8 @@
 //!
 //! `usage = sqrt((|f_t| / (mu f_z))^2 + (tau_n / (mu f_z rho))^2)`, kept while `usage <= 1`.
 //!
-//! The support is sampled per foot from the pattern's contact state: the flat sole rectangle,
-//! the toe segment in toe-off, the heel edge at heel strike.
+//! The support is sampled per foot from the pattern's contact state: the flat sole rectangle
+//! with its toe segment, the toe segment alone in toe-off, the heel edge at heel strike.
 
 use crate::pattern::{Contact, FootGeometry, FootState};
 use nalgebra::{Vector2, Vector3};
@@ -77,7 +77,8 @@ impl Support {
         let left = Vector2::new(-heading.y, heading.x);
         let base = Vector2::new(origin.x, origin.y);
         let (x0, x1) = match foot.contact {
-            Contact::Flat => (-g.back, g.front),
+            // The toe segment lies flat ahead of the sole's front edge.
+            Contact::Flat => (-g.back, g.front + g.toe_length),
             // The toe segment lies flat ahead of the toe axis, whose ground point is where the
             // sole's front edge would be with the foot flat.
             Contact::Toe => (0.0, g.toe_length),
