@@ -20,6 +20,7 @@ fn box_plant(contact: ContactParams) -> Plant {
         body: "box".into(),
         points: sole_rectangle(Vector3::new(0.0, 0.0, -0.05), 0.3, 0.2),
         reference: Vector3::new(0.0, 0.0, -0.05),
+        part_of: None,
     }];
     let config = PlantConfig {
         contact,

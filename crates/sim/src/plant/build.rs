@@ -7,8 +7,12 @@
 //! joints get the two ankle screw rotors (rotor `k` of a multi-input mechanism drives input
 //! `k`); the kinematic vergence joint is a direct torque source. Feet: the bodies `l_foot` /
 //! `r_foot` with 8 sole points on the rectangle of the foot box, at the height of the sole
-//! markers `l_sole` / `r_sole`. The box's edge lengths are recovered from its inertia
-//! (`a^2 = 6 (I_yy + I_zz - I_xx) / m`, etc.), so they follow the parameter file.
+//! markers `l_sole` / `r_sole`; with [`PlantConfig::toe_contacts`] (default) the toe segments
+//! `l_toe` / `r_toe` are entries `left_toe` / `right_toe` of their own, parts of their feet, with
+//! the 5 points of the toe box's rectangle at the sole's height that are not on the foot's
+//! front edge (corners and midpoint of the front edge, midpoints of the sides). The box's edge
+//! lengths are recovered from its inertia (`a^2 = 6 (I_yy + I_zz - I_xx) / m`, etc.), so they
+//! follow the parameter file.
 
 use super::armature::{with_rotors, Armature};
 use super::{Plant, PlantConfig};
@@ -62,10 +66,17 @@ pub fn lola_plant(variant: LolaType, config: PlantConfig) -> Result<LolaPlant, S
             transmission,
         )?);
     }
-    let feet = [("left", "l_foot", "l_sole"), ("right", "r_foot", "r_sole")]
+    let mut feet = [("left", "l_foot", "l_sole"), ("right", "r_foot", "r_sole")]
         .iter()
         .map(|(name, foot, sole)| lola_foot(m, name, foot, sole))
         .collect::<Result<Vec<_>, _>>()?;
+    if config.toe_contacts {
+        let toes = [("left_toe", "l_toe", 0), ("right_toe", "r_toe", 1)];
+        for (name, toe, k) in toes {
+            let toe = lola_toe(m, name, toe, &feet[k])?;
+            feet.push(toe);
+        }
+    }
     let stops: Vec<JointSpec> = lola
         .limits
         .iter()
@@ -180,6 +191,40 @@ fn lola_foot(m: &Model, name: &str, foot: &str, sole: &str) -> Result<FootSpec, 
         body: foot.to_string(),
         points: sole_rectangle(center, len, wid),
         reference: center,
+        part_of: None,
+    })
+}
+
+/// A Lola toe segment: the points of the toe box's rectangle at the height of its foot's sole
+/// in the neutral pose (toe and sole flat together), without those on the foot's own points
+/// (the rectangle's rear edge is the foot's front edge, the toe joint line); a part of `foot`.
+fn lola_toe(m: &Model, name: &str, toe: &str, foot: &FootSpec) -> Result<FootSpec, SimError> {
+    let tb = m.body_id(toe).ok_or_else(|| unknown("toe body", toe))?;
+    let b = m.body(tb).ok_or_else(|| unknown("toe body", toe))?;
+    if b.parent().and_then(|p| m.body(p)).map(|p| p.name()) != Some(foot.body.as_str()) {
+        return Err(SimError::InvalidParameter {
+            what: format!("toe `{toe}`"),
+            reason: format!("its parent is not the foot body `{}`", foot.body),
+        });
+    }
+    // Toe frame <- foot frame at the neutral pose (joint angle 0).
+    let placement = *b.placement();
+    let to_toe = |p: &Vector3<f64>| (placement.inverse() * Point3::from(*p)).coords;
+    let sole = to_toe(&foot.reference);
+    let com = b.inertia().com();
+    let [len, wid, _] = box_size(m, tb);
+    let center = Vector3::new(com.x, com.y, sole.z);
+    let shared = |p: &Vector3<f64>| foot.points.iter().any(|c| (to_toe(c) - p).norm() < 1e-6);
+    let points: Vec<_> = sole_rectangle(center, len, wid)
+        .into_iter()
+        .filter(|p| !shared(p))
+        .collect();
+    Ok(FootSpec {
+        name: name.to_string(),
+        body: toe.to_string(),
+        points,
+        reference: center,
+        part_of: Some(foot.name.clone()),
     })
 }
 
@@ -289,6 +334,7 @@ pub fn urdf_plant(
             body: body.name().to_string(),
             points: local.into_iter().map(to_body).collect(),
             reference: to_body(feet.center),
+            part_of: None,
         });
     }
     Plant::new(m.clone(), actuators, &specs, Vec::new(), config)?.with_passive(&passive)

@@ -14,8 +14,9 @@ pub struct ActuatorInertia {
     /// Mass-matrix diagonal at the joint coordinate: the subtree plus reflected rotor inertia
     /// (Type 3: plus `N^2` times the motor's diagonal).
     pub sub: f64,
-    /// Rigid inertia of all other bodies about the joint axis if the subtree holds a foot
-    /// (what a stance joint moves, e.g. an ankle carrying the body), else 0.
+    /// Rigid inertia of all other bodies about the joint axis if the subtree holds a contact
+    /// body (what a stance joint moves, e.g. an ankle carrying the body, or a toe joint in
+    /// toe-off), else 0.
     pub rest: f64,
     /// Inertia the actuator drives when everything else moves freely too, `1 / (M^-1)_jj`
     /// (at most `sub`; the decentralised PD's stability cap); for elastic gears the motor
@@ -116,8 +117,8 @@ impl Plant {
     }
 
     /// Rigid inertia about the axis of the one-DoF joint owning `v` of every body outside its
-    /// subtree, if the subtree holds a foot (else 0: nothing can hold it); world poses from the
-    /// last kinematics pass.
+    /// subtree, if the subtree holds a contact body, foot or toe (else 0: nothing can hold it);
+    /// world poses from the last kinematics pass.
     fn rest_inertia(&self, v: usize) -> f64 {
         let bodies = self.model.bodies();
         let Some(j) = bodies
