@@ -142,3 +142,37 @@ fn foot_chains_agree_with_the_dynamics_kinematics_and_wrenches_add_up() {
     }
     assert!(in_contact > 0, "the random state should touch the ground");
 }
+
+/// `sliding_velocity` is the point velocity minus the bristle rate of `tangential`: zero while
+/// the trial force lies inside the cone, antiparallel to the force on it.
+#[test]
+fn sliding_velocity_is_the_velocity_the_bristle_does_not_take_up() {
+    use nalgebra::Vector2;
+    let p = ContactParams::default();
+    let mut rng = rand::rngs::StdRng::seed_from_u64(3);
+    let (mut stuck, mut slid) = (0, 0);
+    for _ in 0..2000 {
+        let s = Vector2::new(rng.random_range(-5e-4..5e-4), rng.random_range(-5e-4..5e-4));
+        let v = Vector2::new(rng.random_range(-0.2..0.2), rng.random_range(-0.2..0.2));
+        let f_n = rng.random_range(0.0..200.0);
+        let (f, rate) = p.tangential(s, v, f_n);
+        let u = p.sliding_velocity(s, v, f);
+        assert!(
+            (u - (v - rate)).norm() < 1e-9 * (1.0 + v.norm()),
+            "{u} vs {}",
+            v - rate
+        );
+        let trial = -(s * p.tangential_stiffness + v * p.tangential_damping);
+        if trial.norm() <= p.friction * f_n {
+            assert!(u.norm() < 1e-12, "sticking point slides at {u}");
+            stuck += 1;
+        } else {
+            assert!(
+                u.dot(&f) <= 1e-12 * u.norm() * f.norm() + 1e-300,
+                "{u} vs force {f}"
+            );
+            slid += 1;
+        }
+    }
+    assert!(stuck > 50 && slid > 50, "{stuck} stuck, {slid} slid");
+}

@@ -53,7 +53,8 @@ fn stand_type2_comes_to_rest_and_carries_its_weight() {
         "IMU {g:?}"
     );
     assert!(s.passed(), "{:?}", s.checks);
-    // 16 sole points as in Table 2.3 plus 2 x 5 toe points: 2 bristle states each.
+    // 16 sole points as in Table 2.3 plus 2 x 5 on the toes (the toe rectangles' 8 points,
+    // their rear edges the soles' front edges): 2 bristle states each.
     assert_eq!(s.layout.table_2_3(), [31, 52, 0, 115]);
     let err = (s.final_contact_force - s.weight).abs() / s.weight;
     assert!(

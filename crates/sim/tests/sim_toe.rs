@@ -41,7 +41,7 @@ fn the_toes_are_entries_of_their_own_and_parts_of_their_feet() {
         (c.side_index("right"), c.side_index("left_toe")),
         (Some(1), None)
     );
-    assert_eq!(c.npoints(), 2 * 8 + 2 * 5);
+    assert_eq!(c.npoints(), 2 * 5 + 2 * 8);
     let off = PlantConfig {
         toe_contacts: false,
         ..PlantConfig::default()
@@ -53,9 +53,11 @@ fn the_toes_are_entries_of_their_own_and_parts_of_their_feet() {
 }
 
 /// At the neutral pose the toe points lie on the toe box's sole rectangle at the height of the
-/// foot's sole, ahead of the foot's front edge and not on it. Expected from the parameter file
-/// (`l_toe` origin [0.13, 0, -0.07] in the foot frame, box 0.06 x 0.12 with its CoM 0.03 ahead
-/// of the joint, `l_sole` at z = -0.09): foot-frame x in {0.16, 0.19}, y in {0, +-0.06}.
+/// foot's sole; the toe joint line (the sole's front edge) is the toe's, the foot keeps the
+/// rest of its rectangle. Expected from the parameter file (`l_toe` origin [0.13, 0, -0.07] in
+/// the foot frame, box 0.06 x 0.12 with its CoM 0.03 ahead of the joint, `l_foot` box 0.22 long
+/// with its CoM at x = 0.02, `l_sole` at z = -0.09): toe points at foot-frame x in
+/// {0.13, 0.16, 0.19}, foot points at x in {-0.09, 0.02}.
 #[test]
 fn toe_points_are_flat_with_the_sole_at_the_neutral_pose() {
     let mut plant = lola_plant(LolaType::Type2, PlantConfig::default())
@@ -84,6 +86,9 @@ fn toe_points_are_flat_with_the_sole_at_the_neutral_pose() {
             .collect();
         local.sort_by(|a, b| a.partial_cmp(b).unwrap());
         let expected = [
+            [0.13, -0.06, -0.09],
+            [0.13, 0.0, -0.09],
+            [0.13, 0.06, -0.09],
             [0.16, -0.06, -0.09],
             [0.16, 0.06, -0.09],
             [0.19, -0.06, -0.09],
@@ -91,6 +96,12 @@ fn toe_points_are_flat_with_the_sole_at_the_neutral_pose() {
             [0.19, 0.06, -0.09],
         ];
         assert_eq!(local, expected, "entry {toe}");
+        let mut xs: Vec<f64> = sole
+            .iter()
+            .map(|p| ((st.rot.transpose() * (p - st.pos)).x * 1e6).round() / 1e6)
+            .collect();
+        xs.sort_by(f64::total_cmp);
+        assert_eq!(xs, [-0.09, -0.09, -0.09, 0.02, 0.02], "entry {foot}");
         let sole_z = sole[0].z;
         assert!(sole
             .iter()
@@ -120,7 +131,7 @@ fn a_standing_robot_carries_load_on_its_toes() {
     for toe in [2, 3] {
         let w = &out.feet[toe];
         assert!(w.force.z > 0.02 * s.weight, "toe {toe}: {w:?}");
-        assert_eq!(w.points_in_contact, 5, "toe {toe}");
+        assert_eq!(w.points_in_contact, 8, "toe {toe}");
     }
     let entries: f64 = out.feet.iter().map(|w| w.force.z).sum();
     let sides: f64 = out.sides.iter().map(|w| w.force.z).sum();

@@ -11,7 +11,7 @@
 //! Deviation from Table 2.3, documented: the thesis counts 3 contact-layer states per point
 //! (48 for 16 points). Our normal law is algebraic in the penetration and its rate, so only
 //! the two tangential bristle deflections are states: 2 per point, 32 for the 16 sole points
-//! (52 with Lola's 2 x 5 toe points, [`crate::plant::PlantConfig::toe_contacts`]).
+//! (52 with Lola's toes, [`crate::plant::PlantConfig::toe_contacts`]: 5 points per foot, 8 per toe).
 //!
 //! Forces are computed between the two phases of forward dynamics from the foot poses and
 //! velocities of its kinematics pass ([`ContactSet::evaluate_from`]), so a right-hand side
@@ -20,14 +20,14 @@
 //!
 //! Stiffness and the 1 ms RK4 step. RK4 is stable for `h lambda` on the
 //! negative real axis down to -2.78 and for oscillations up to `h omega ~ 2.8`. The defaults
-//! (per point 2e5 N/m, normal 400 N s/m, tangential 200 N s/m; 8 sole points per foot, 5 per
-//! toe) give Lola's foot, whose joint-space inertia includes the reflected rotor inertias,
+//! (per point 2e5 N/m, normal 400 N s/m, tangential 200 N s/m; 8 sole points per foot, or 5 and
+//! 8 on the toe) give Lola's foot, whose joint-space inertia includes the reflected rotor inertias,
 //! vertical and tilt modes with `h |lambda| <= ~1` at h = 1 ms; the bristle relaxation
 //! `d_t / k_t = 1 ms` gives `h / tau = 1`. The fastest mode of the standing robot is the feet's
 //! roll about the ankle adduction axes, damped by the bristles 9 cm below the axis and by the
 //! drives' smoothed friction: its eigenvalue (of the right-hand side's Jacobian, by finite
-//! differences) gives `h |lambda|` = 2.26 with the toe points and 2.10 without; a 400 N s/m
-//! bristle damper would give 3.43 with toes (unstable at 1 ms) and 2.63 without. The static
+//! differences) gives `h |lambda|` = 2.32 with the toe points and 2.10 without; a 400 N s/m
+//! bristle damper would give 3.46 with toes (unstable at 1 ms) and 2.63 without. The static
 //! penetration standing is ~0.1-0.2 mm. Lighter feet without rotor
 //! inertia (URDF robots) need softer points: keep `8 d / m_foot` and `sqrt(8 k / m_foot)`
 //! below ~2000 1/s (see `tests/sim_urdf.rs` for the G1: 5e4 N/m, 100 N s/m).
