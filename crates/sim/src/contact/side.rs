@@ -6,6 +6,7 @@
 use super::{ContactOutput, ContactSet, FootSpec, FootWrench};
 use crate::error::SimError;
 use biped_dynamics::BodyId;
+use nalgebra::Vector2;
 
 impl FootWrench {
     /// The sum of this wrench and `part`'s with the moment about this wrench's reference
@@ -90,6 +91,36 @@ impl ContactSet {
     /// Entry indices of side `side` (the foot first, then its parts); empty if out of range.
     pub fn side_entries(&self, side: usize) -> &[usize] {
         self.sides.get(side).map_or(&[], Vec::as_slice)
+    }
+
+    /// Load-weighted mean sliding speed of side `side`'s points in contact,
+    /// `sum f_n,j |u_j| / sum f_n,j` with `u_j` the point's sliding velocity
+    /// ([`super::ContactParams::sliding_velocity`]: 0 while it sticks), i.e. the power the
+    /// side's friction dissipates over `mu F_n`; from the bristle states `bristles` (the state's
+    /// contact layer) and the outputs `out` of the same state. 0 without contact.
+    pub fn side_slip_speed(&self, side: usize, bristles: &[f64], out: &ContactOutput) -> f64 {
+        let (mut power, mut load) = (0.0, 0.0);
+        for &e in self.side_entries(side) {
+            let (foot, st) = (&self.feet[e], &out.foot_states[e]);
+            for (j, c) in foot.spec.points.iter().enumerate() {
+                let k = foot.first + j;
+                let (f, b) = (out.point_forces[k], bristles.get(2 * k..2 * k + 2));
+                let (Some(b), true) = (b, f.z > 0.0) else {
+                    continue;
+                };
+                let v = st.point(c).1.xy();
+                let u = self
+                    .params
+                    .sliding_velocity(Vector2::new(b[0], b[1]), v, f.xy());
+                power += f.z * u.norm();
+                load += f.z;
+            }
+        }
+        if load > 0.0 {
+            power / load
+        } else {
+            0.0
+        }
     }
 
     /// Fills `out.sides` from the entries' wrenches in `out.feet`.

@@ -16,6 +16,7 @@ mod forces;
 mod inertia;
 pub mod kinematics;
 pub mod layout;
+mod lola_feet;
 
 pub use ankles::AnkleAxis;
 pub use armature::Armature;
