@@ -106,20 +106,21 @@ fn short_stand_writes_csv_plots_and_a_consistent_summary() {
     // Lola's drives have no effort or speed limits in torque mode: nothing is cut.
     assert_eq!(s["drive_limits"]["cycles"].as_u64(), Some(0));
     assert!(s["drive_limits"]["most"].is_null());
-    // The CSV: one row per period plus the end, per-foot forces summing to the total.
+    // The CSV: one row per period plus the end, the forces of the feet and toes (each contact
+    // entry on its own body) summing to the total.
     let table = csv(&dir);
     assert_eq!(table.0[0], "time");
     assert_eq!(table.1.len(), 201);
     let time = column(&table, "time");
     assert!(time.windows(2).all(|w| (w[1] - w[0] - 1e-3).abs() < 1e-12));
-    let (l, r, total) = (
-        column(&table, "left.fz"),
-        column(&table, "right.fz"),
-        column(&table, "contact.fz"),
-    );
+    let entries =
+        ["left", "right", "left_toe", "right_toe"].map(|e| column(&table, &format!("{e}.fz")));
+    let total = column(&table, "contact.fz");
     for k in 0..total.len() {
-        assert!((l[k] + r[k] - total[k]).abs() < 1e-9 * weight);
+        let sum: f64 = entries.iter().map(|c| c[k]).sum();
+        assert!((sum - total[k]).abs() < 1e-9 * weight);
     }
+    assert!(entries[2][200] > 0.01 * weight, "the toes carry load");
     assert!((total[200] - fz).abs() < 1e-9 * weight, "CSV end = summary");
     let base = column(&table, "q[root.z]");
     assert!((base[200] - num(&s, "final_base_height")).abs() < 1e-15);

@@ -113,10 +113,17 @@ fn dynamic_walk_writes_csv_plots_and_summary_entry() {
         "max_tracking_error",
         "realtime_factor",
         "rhs_evaluations",
+        "max_friction_usage",
+        "max_slip_speed",
+        "max_slip_distance",
     ] {
         let x = d[key].as_f64().unwrap_or(f64::NAN);
         assert!(x.is_finite(), "dynamic.{key} = {x}");
     }
+    // the friction verdict and the divergence flag are serialised beside the fall verdict
+    assert_eq!(d["friction_kept"], true, "{d}");
+    assert!(d["slip_at"].is_null(), "{d}");
+    assert_eq!(d["diverged"], false, "{d}");
     assert!(d["distance"].as_f64().unwrap() >= 0.8 * d["planned_distance"].as_f64().unwrap());
     let csv = std::fs::read_to_string(dir.join("dynamic.csv")).unwrap();
     let header = csv.lines().next().unwrap();

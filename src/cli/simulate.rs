@@ -73,7 +73,8 @@ pub struct SimulateArgs {
     #[arg(long)]
     no_joint_friction: bool,
     /// Contact stiffness [N/m] and damping [N s/m] of each sole point, normal and tangential
-    /// (default: Lola 2e5,400; URDF 5e4,100 for the light feet of URDF robots).
+    /// (default: Lola 2e5,400 with a tangential damper of 200; URDF 5e4,100 for the light feet
+    /// of URDF robots).
     #[arg(long, value_name = "K,D", allow_hyphen_values = true)]
     contact: Option<String>,
     /// Coulomb friction coefficient `mu` between soles and ground (default 0.8).

@@ -36,6 +36,9 @@ fn default_walk_does_not_fall_and_advances() {
     // With toe-off and the IK's hard joint limits the reference stays inside every range
     // (the flat-footed reference took the rear ankle ~0.34 rad beyond it).
     assert_eq!(s.limit_excess, 0.0, "{}", s.limit_excess);
+    // no divergence, and the soles keep their grip (walk_dynamic_contact.rs: what slipping is)
+    assert!(!s.diverged);
+    assert!(s.friction_kept && s.slip_at.is_none(), "{s:?}");
     // the series cover the walk plus the hold time, every cycle, both feet used
     let n = run.series.t.len();
     assert!((s.sim_time - (n - 1) as f64 * 1e-3).abs() < 1e-9);
@@ -161,7 +164,7 @@ fn feedforward_balances_the_base_in_every_phase() {
             s.t,
             tau.rows(0, 6)
         );
-        let fz = feet.map(|w| w.lin.norm());
+        let fz = feet.map(|(_, w)| w.lin.norm());
         match s.phase {
             Phase::LeftStance => assert!(fz[1] == 0.0 && fz[0] > 0.7 * weight(&lola), "{fz:?}"),
             Phase::RightStance => assert!(fz[0] == 0.0 && fz[1] > 0.7 * weight(&lola), "{fz:?}"),
@@ -273,20 +276,26 @@ fn rnea_with_simulated_contact_wrenches_reproduces_the_commands() {
     sim.run(h, &mut |_| Ok(())).unwrap();
     let q = DVector::from_column_slice(&sim.state()[l.q()]);
     let v = v_of(&sim);
-    let feet: Vec<_> = sim.plant().contact().bodies().collect();
+    // Every contact entry's wrench: the feet and the toe segments, each on its own body.
     let fext = sim.plant().external_wrenches();
-    let measured = [fext[feet[0]], fext[feet[1]]];
+    let measured: Vec<_> = sim
+        .plant()
+        .contact()
+        .bodies()
+        .map(|b| (b, fext[b]))
+        .collect();
+    assert_eq!(measured.len(), 4);
     let cmd_now = sim.plant().commands().to_vec();
     sim.run(h, &mut |_| Ok(())).unwrap();
     let a = (v_of(&sim) - &v_prev) / (2.0 * h);
-    let carried: f64 = measured.iter().map(|w| w.lin.norm()).sum();
+    let carried: f64 = measured.iter().map(|(_, w)| w.lin.norm()).sum();
     let weight = weight(&lola);
     assert!(
         (carried - weight).abs() < 0.02 * weight,
         "contact carries the weight: {carried} of {weight}"
     );
     let mut ff = Feedforward::new(&lola).unwrap();
-    let tau = ff.with_wrenches(&q, &v, &a, measured).unwrap();
+    let tau = ff.with_wrenches(&q, &v, &a, &measured).unwrap();
     assert!(
         tau.rows(0, 6).amax() < 0.5,
         "base balanced: {}",

@@ -61,15 +61,48 @@ pub enum SimError {
     /// A drive mechanism could not be evaluated.
     #[error(transparent)]
     Mechanism(#[from] MechanismError),
-    /// The integrator failed.
+    /// The integrator failed (settings, interval, step count).
     #[error("integrator: {0}")]
     Integrator(String),
+    /// The integration diverged: a non-finite state or derivative, or a step-size underflow.
+    #[error("integrator: {0}")]
+    Divergence(String),
     /// Writing outputs failed.
     #[error("output: {0}")]
     Output(String),
     /// The observer ended the run early (e.g. on SIGINT); the text says why.
     #[error("stopped: {0}")]
     Stopped(String),
+}
+
+impl SimError {
+    /// Whether this error of a running simulation says that its state blew up (numerical or
+    /// physical divergence: non-finite values, a mass matrix no longer positive definite, a
+    /// free-joint quaternion far off the unit sphere, a mechanism loop that cannot close, an
+    /// integrator step underflow), as opposed to a setup error (parameters, lengths, names,
+    /// unsupported models) or an observer's stop.
+    pub fn is_divergence(&self) -> bool {
+        match self {
+            SimError::NonFinite { .. } | SimError::Divergence(_) | SimError::Mechanism(_) => true,
+            SimError::Dynamics(e) | SimError::Jacobian(JacobianError::Dynamics(e)) => {
+                dynamics_diverged(e)
+            }
+            _ => false,
+        }
+    }
+}
+
+/// The dynamics errors a diverging state produces (see [`SimError::is_divergence`]).
+fn dynamics_diverged(e: &DynamicsError) -> bool {
+    matches!(
+        e,
+        DynamicsError::NonFinite { .. }
+            | DynamicsError::ZeroQuaternion { .. }
+            | DynamicsError::QuaternionNorm { .. }
+            | DynamicsError::NotPositiveDefinite { .. }
+            | DynamicsError::Mechanism { .. }
+            | DynamicsError::NonFiniteResult { .. }
+    )
 }
 
 /// Checks that `x` is finite and `> 0` (or `>= 0` with `allow_zero`).

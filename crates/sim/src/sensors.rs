@@ -46,7 +46,8 @@ pub struct Sensors {
     pub motor_velocities: Vec<f64>,
     /// Motor currents \[A] (commanded, integrated, or estimated from the torque).
     pub motor_currents: Vec<f64>,
-    /// Foot F/T wrenches, one per foot (foot body frame, moment about the body origin).
+    /// F/T wrenches, one per contact entry in the order of the plant's contact specs (feet and
+    /// their parts such as toes: each on its own body, body frame, moment about the body origin).
     pub foot_wrenches: Vec<Wrench>,
     /// IMU on the floating base (`None` without a floating base).
     pub imu: Option<Imu>,

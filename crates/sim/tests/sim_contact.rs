@@ -20,6 +20,7 @@ fn box_plant(contact: ContactParams) -> Plant {
         body: "box".into(),
         points: sole_rectangle(Vector3::new(0.0, 0.0, -0.05), 0.3, 0.2),
         reference: Vector3::new(0.0, 0.0, -0.05),
+        part_of: None,
     }];
     let config = PlantConfig {
         contact,
@@ -140,4 +141,74 @@ fn foot_chains_agree_with_the_dynamics_kinematics_and_wrenches_add_up() {
         assert!((torque_ref - f.torque).norm() < 1e-9 * (1.0 + f.torque.norm()));
     }
     assert!(in_contact > 0, "the random state should touch the ground");
+}
+
+/// `sliding_velocity` is the point velocity minus the bristle rate of `tangential`: zero while
+/// the trial force lies inside the cone, antiparallel to the force on it.
+#[test]
+fn sliding_velocity_is_the_velocity_the_bristle_does_not_take_up() {
+    use nalgebra::Vector2;
+    let p = ContactParams::default();
+    let mut rng = rand::rngs::StdRng::seed_from_u64(3);
+    let (mut stuck, mut slid) = (0, 0);
+    for _ in 0..2000 {
+        let s = Vector2::new(rng.random_range(-5e-4..5e-4), rng.random_range(-5e-4..5e-4));
+        let v = Vector2::new(rng.random_range(-0.2..0.2), rng.random_range(-0.2..0.2));
+        let f_n = rng.random_range(0.0..200.0);
+        let (f, rate) = p.tangential(s, v, f_n);
+        let u = p.sliding_velocity(s, v, f);
+        assert!(
+            (u - (v - rate)).norm() < 1e-9 * (1.0 + v.norm()),
+            "{u} vs {}",
+            v - rate
+        );
+        let trial = -(s * p.tangential_stiffness + v * p.tangential_damping);
+        if trial.norm() <= p.friction * f_n {
+            assert!(u.norm() < 1e-12, "sticking point slides at {u}");
+            stuck += 1;
+        } else {
+            assert!(
+                u.dot(&f) <= 1e-12 * u.norm() * f.norm() + 1e-300,
+                "{u} vs force {f}"
+            );
+            slid += 1;
+        }
+    }
+    assert!(stuck > 50 && slid > 50, "{stuck} stuck, {slid} slid");
+}
+
+/// The side's slip speed integrated over a slide is the distance the box slid (Coulomb
+/// deceleration from 1 m/s on `mu = 0.5`, then stiction), up to the bristles' deflection; a box
+/// at rest on the ground does not slip.
+#[test]
+fn side_slip_speed_integrates_to_the_sliding_distance() {
+    let mut plant = box_plant(ContactParams {
+        friction: 0.5,
+        ..ContactParams::default()
+    });
+    let delta = ContactParams::default().static_penetration(MASS * 9.81 / 8.0);
+    let mut z = box_state(&plant, 0.05 - delta, [1.0, 0.0, 0.0]);
+    let x0 = z[0];
+    let h = 2.5e-4;
+    let mut slid = 0.0;
+    let mut at_rest = 0.0_f64;
+    common::integrate(&mut plant, Method::Rk4, h, &mut z, 8000, |t, z, p| {
+        let bristles = &z[p.layout().contact()];
+        let out = p.outputs(z).unwrap().contact.clone();
+        let speed = p.contact().side_slip_speed(0, bristles, &out);
+        slid += speed * h;
+        if t > 1.0 {
+            at_rest = at_rest.max(speed);
+        }
+    });
+    let travelled = z[0] - x0;
+    println!("slid {slid}, travelled {travelled}, at rest {at_rest}");
+    // The sum samples the end of each step: v0 h / 2 = 1.25e-4 m short of the integral; the
+    // bristles' deflection is at most mu m g / (8 k_t) = 1.5e-5 m.
+    assert!(
+        (slid - travelled).abs() < 2e-4,
+        "slid {slid}, travelled {travelled}"
+    );
+    assert!(travelled > 0.09, "{travelled}");
+    assert!(at_rest < 1e-6, "at rest: {at_rest}");
 }

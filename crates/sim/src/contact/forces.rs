@@ -5,7 +5,8 @@
 //! Per foot the point forces `f_j` (world) are summed once as `F = sum f_j` and
 //! `M = sum r_j x f_j` with `r_j = A c_j` the world offset of point `c_j` from the body origin;
 //! the body-frame wrench is then `[A^T M; A^T F]` and the foot torque about the sole reference
-//! `M + (r_O - r_ref) x F` (one rotation per foot instead of one per point).
+//! `M + (r_O - r_ref) x F` (one rotation per foot instead of one per point). The side wrenches
+//! (a foot with its toe) follow from the entries' ([`ContactSet::sum_sides`]).
 
 use super::{BodyState, ContactOutput, ContactSet, FootWrench};
 use biped_dynamics::{BodyId, Data, Wrench};
@@ -31,8 +32,8 @@ impl BodyState {
 
 impl ContactSet {
     /// Contact forces at `(q, v)` with bristle states `s`: writes the bristle rates into `sdot`,
-    /// sets the foot bodies' entries of `fext` (body frame, moment about the body origin) and
-    /// fills `out`. No allocation. `fext` entries of other bodies are left alone.
+    /// sets the entry bodies' `fext` (body frame, moment about the body origin) and fills `out`
+    /// (entries and sides). No allocation. `fext` entries of other bodies are left alone.
     pub fn evaluate(
         &self,
         q: &[f64],
@@ -46,6 +47,7 @@ impl ContactSet {
             let st = self.feet[k].chain.eval(q, v);
             self.foot_forces(k, &st, s, sdot, fext, out);
         }
+        self.sum_sides(out);
     }
 
     /// Same as [`Self::evaluate`] with the foot poses and velocities read from `data`, which
@@ -63,6 +65,7 @@ impl ContactSet {
             let st = BodyState::from_data(data, self.feet[k].body).unwrap_or(BodyState::identity());
             self.foot_forces(k, &st, s, sdot, fext, out);
         }
+        self.sum_sides(out);
     }
 
     /// Point forces, bristle rates, body wrench and foot wrench of foot `k` in state `st`.
@@ -104,6 +107,7 @@ impl ContactSet {
         out.feet[k] = FootWrench {
             force,
             torque: moment - reference.cross(&force),
+            reference: st.pos + reference,
             cop: (fn_sum > 0.0).then(|| cop / fn_sum),
             points_in_contact: in_contact,
         };

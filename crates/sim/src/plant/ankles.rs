@@ -23,9 +23,9 @@ const PARALLEL: f64 = 0.9;
 const HORIZONTAL: f64 = 0.5;
 
 impl Plant {
-    /// The ankles at `q`: for every foot, the first two actuated revolute joints up its chain
-    /// whose axes are mostly horizontal and not parallel (pitch and roll). Empty without a
-    /// floating base.
+    /// The ankles at `q`: for every foot (one per side, parts such as toes excluded: a toe
+    /// joint is not an ankle), the first two actuated revolute joints up its chain whose axes
+    /// are mostly horizontal and not parallel (pitch and roll). Empty without a floating base.
     pub fn ankle_axes(&mut self, q: &DVector<f64>) -> Result<Vec<AnkleAxis>, SimError> {
         let Some((_, vi)) = self.floating_base() else {
             return Ok(Vec::new());
@@ -38,7 +38,7 @@ impl Plant {
             .unwrap_or(0);
         let to_base = self.data.world_rot[base].transpose();
         let mut out: Vec<AnkleAxis> = Vec::new();
-        for foot in self.contact.bodies() {
+        for foot in self.contact.side_bodies() {
             let first = out.len();
             let mut body = Some(foot);
             while let (Some(b), true) = (body, out.len() < first + 2) {

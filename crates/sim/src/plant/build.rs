@@ -5,12 +5,11 @@
 //! file ([`crate::passive`]; its drives carry the gear friction, so no joint friction).
 //! Harmonic Drive joints get a rigid gear (Type 2) or their elastic motor coordinate (Type 3); the knee gets its screw rotor; the two ankle
 //! joints get the two ankle screw rotors (rotor `k` of a multi-input mechanism drives input
-//! `k`); the kinematic vergence joint is a direct torque source. Feet: the bodies `l_foot` /
-//! `r_foot` with 8 sole points on the rectangle of the foot box, at the height of the sole
-//! markers `l_sole` / `r_sole`. The box's edge lengths are recovered from its inertia
-//! (`a^2 = 6 (I_yy + I_zz - I_xx) / m`, etc.), so they follow the parameter file.
+//! `k`); the kinematic vergence joint is a direct torque source. Feet and toes: see
+//! [`super::lola_feet`].
 
 use super::armature::{with_rotors, Armature};
+use super::lola_feet;
 use super::{Plant, PlantConfig};
 use crate::contact::{sole_rectangle, FootSpec};
 use crate::drive::{Actuator, Transmission};
@@ -62,10 +61,7 @@ pub fn lola_plant(variant: LolaType, config: PlantConfig) -> Result<LolaPlant, S
             transmission,
         )?);
     }
-    let feet = [("left", "l_foot", "l_sole"), ("right", "r_foot", "r_sole")]
-        .iter()
-        .map(|(name, foot, sole)| lola_foot(m, name, foot, sole))
-        .collect::<Result<Vec<_>, _>>()?;
+    let feet = lola_feet::contact_entries(m, config.toe_contacts)?;
     let stops: Vec<JointSpec> = lola
         .limits
         .iter()
@@ -83,7 +79,7 @@ pub fn lola_plant(variant: LolaType, config: PlantConfig) -> Result<LolaPlant, S
     Ok(LolaPlant { plant, lola })
 }
 
-fn unknown(kind: &'static str, name: &str) -> SimError {
+pub(super) fn unknown(kind: &'static str, name: &str) -> SimError {
     SimError::Unknown {
         kind,
         name: name.to_string(),
@@ -150,37 +146,6 @@ fn rotor_of(m: &Model, joint: BodyId) -> Result<Transmission, SimError> {
         Some(&rotor) => Actuator::rotor_transmission(m, rotor),
         None => Ok(Transmission::Direct),
     }
-}
-
-/// Edge lengths of the solid box whose inertia the body carries.
-fn box_size(m: &Model, body: BodyId) -> [f64; 3] {
-    let Some(b) = m.body(body) else {
-        return [0.0; 3];
-    };
-    let i = b.inertia().inertia_about_com();
-    let mass = b.inertia().mass().max(1e-12);
-    let (xx, yy, zz) = (i[(0, 0)], i[(1, 1)], i[(2, 2)]);
-    [yy + zz - xx, xx + zz - yy, xx + yy - zz].map(|s| (6.0 * s / mass).max(0.0).sqrt())
-}
-
-/// A Lola foot: 8 points on the foot box's rectangle at the sole marker's height.
-fn lola_foot(m: &Model, name: &str, foot: &str, sole: &str) -> Result<FootSpec, SimError> {
-    let fb = m.body_id(foot).ok_or_else(|| unknown("foot body", foot))?;
-    let sb = m
-        .body_id(sole)
-        .ok_or_else(|| unknown("sole marker", sole))?;
-    let sole_z = m
-        .body(sb)
-        .map_or(0.0, |b| b.placement().translation.vector.z);
-    let com = m.body(fb).map_or(Vector3::zeros(), |b| b.inertia().com());
-    let [len, wid, _] = box_size(m, fb);
-    let center = Vector3::new(com.x, com.y, sole_z);
-    Ok(FootSpec {
-        name: name.to_string(),
-        body: foot.to_string(),
-        points: sole_rectangle(center, len, wid),
-        reference: center,
-    })
 }
 
 /// Feet of a URDF model: link names and the sole rectangle in each link's frame.
@@ -289,6 +254,7 @@ pub fn urdf_plant(
             body: body.name().to_string(),
             points: local.into_iter().map(to_body).collect(),
             reference: to_body(feet.center),
+            part_of: None,
         });
     }
     Plant::new(m.clone(), actuators, &specs, Vec::new(), config)?.with_passive(&passive)

@@ -181,7 +181,7 @@ impl Plant {
 
 /// The contact layer's result at the last state pass ([`Plant::state_outputs`]), recalled by
 /// the next right-hand side at bitwise the same `q`, `v` and bristle states (the first
-/// Runge-Kutta stage after a sensor sample) instead of evaluating the 16 points again. Its
+/// Runge-Kutta stage after a sensor sample) instead of evaluating the contact points again. Its
 /// forces are still in the plant's `fext` and outputs, and its roller-screw motor rows in the
 /// plant's rows: every other writer of them clears it.
 #[derive(Debug, Clone, Default)]

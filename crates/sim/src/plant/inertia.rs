@@ -15,7 +15,11 @@ pub struct ActuatorInertia {
     /// (Type 3: plus `N^2` times the motor's diagonal).
     pub sub: f64,
     /// Rigid inertia of all other bodies about the joint axis if the subtree holds a foot
-    /// (what a stance joint moves, e.g. an ankle carrying the body), else 0.
+    /// (what a stance joint moves, e.g. an ankle carrying the body), else 0. A part of a foot
+    /// (a toe) does not count: a toe joint carries the body only in toe-off, where a walking
+    /// controller's feedforward holds the load, and scheduled for the toe's own inertia it
+    /// yields to the ground instead of levering the robot up
+    /// ([`crate::contact::ContactSet::side_bodies`]).
     pub rest: f64,
     /// Inertia the actuator drives when everything else moves freely too, `1 / (M^-1)_jj`
     /// (at most `sub`; the decentralised PD's stability cap); for elastic gears the motor
@@ -116,8 +120,8 @@ impl Plant {
     }
 
     /// Rigid inertia about the axis of the one-DoF joint owning `v` of every body outside its
-    /// subtree, if the subtree holds a foot (else 0: nothing can hold it); world poses from the
-    /// last kinematics pass.
+    /// subtree, if the subtree holds a foot (else 0: nothing can hold it; see
+    /// [`ActuatorInertia::rest`]); world poses from the last kinematics pass.
     fn rest_inertia(&self, v: usize) -> f64 {
         let bodies = self.model.bodies();
         let Some(j) = bodies
@@ -142,7 +146,7 @@ impl Plant {
                 None => return false,
             }
         };
-        if !self.contact.bodies().any(in_subtree) {
+        if !self.contact.side_bodies().any(in_subtree) {
             return 0.0;
         }
         (0..bodies.len())

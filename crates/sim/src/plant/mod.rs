@@ -16,6 +16,7 @@ mod forces;
 mod inertia;
 pub mod kinematics;
 pub mod layout;
+mod lola_feet;
 
 pub use ankles::AnkleAxis;
 pub use armature::Armature;
@@ -57,6 +58,11 @@ pub struct PlantConfig {
     /// End stops and joint friction built from the robot description ([`Plant::with_passive`]).
     #[serde(default)]
     pub passive: PassiveParams,
+    /// Contact points on the toe segments of robots that have them (Lola: `l_toe` / `r_toe`,
+    /// entries `left_toe` / `right_toe`, see [`lola_plant`]); on by default. Off, a foot in
+    /// toe-off stands on the front edge of its sole only.
+    #[serde(default = "default_toe_contacts")]
+    pub toe_contacts: bool,
     /// Forward-dynamics algorithm (O(n) by default).
     #[serde(skip, default = "default_algorithm")]
     pub algorithm: Algorithm,
@@ -66,8 +72,12 @@ fn default_algorithm() -> Algorithm {
     Algorithm::On
 }
 
+fn default_toe_contacts() -> bool {
+    true
+}
+
 impl Default for PlantConfig {
-    /// Torque mode, default contact, Type 3 gears of 2e4 N m/rad with 5 % damping.
+    /// Torque mode, default contact, toe contacts, Type 3 gears of 2e4 N m/rad with 5 % damping.
     ///
     /// Stiffness note: on Lola's toe (link inertia ~2.5e-4 kg m^2) a 2e4 N m/rad gear has
     /// `omega = sqrt(k / J) ~ 9000 rad/s`, so Type 3 needs RK4 steps of <= 0.25 ms; Type 2
@@ -81,6 +91,7 @@ impl Default for PlantConfig {
             motor: MotorParams::default(),
             friction: FrictionParams::default(),
             passive: PassiveParams::default(),
+            toe_contacts: true,
             algorithm: Algorithm::On,
         }
     }

@@ -91,10 +91,14 @@ impl LimitedCommands {
     }
 }
 
-/// Maps an integrator error, keeping the plant's own error.
+/// Maps an integrator error, keeping the plant's own error; a non-finite state or step-size
+/// underflow is a [`SimError::Divergence`].
 fn integ(e: IntegrateError<SimError>) -> SimError {
     match e {
         IntegrateError::System(e) => e,
+        e @ (IntegrateError::NonFinite { .. } | IntegrateError::StepSizeUnderflow { .. }) => {
+            SimError::Divergence(e.to_string())
+        }
         other => SimError::Integrator(other.to_string()),
     }
 }

@@ -4,11 +4,13 @@
 //! The free-joint entries of RNEA at `(q, qd, qdd)` without external forces are the wrench the
 //! ground must supply (see [`crate::walk::evaluate`]). In single support the stance foot takes
 //! all of it; in double support it is split by the position of the motion's own ZMP between
-//! the feet ([`Feedforward::foot_wrenches`]). With these wrenches as
+//! the feet ([`Feedforward::foot_wrenches`]). A foot in toe-off ([`Contact::Toe`]: heel up,
+//! toe segment flat) carries its share on the toe segment, so the toe joint's feedforward holds
+//! the load the ground puts on the toe. With these wrenches as
 //! `f_ext` RNEA's free-joint entries vanish and its joint entries are the actuated joints'
 //! torques (`tau = M qdd + h - J^T f_ext`).
 
-use crate::pattern::{PatternSample, Phase};
+use crate::pattern::{Contact, PatternSample, Phase};
 use crate::walk::error::{model_err, WalkError};
 use crate::walk::evaluate::{body, floating_root, wrench};
 use biped_dynamics::{inverse_dynamics, BodyId, Data, Model, Wrench};
@@ -22,18 +24,22 @@ pub struct Feedforward {
     data: Data,
     root: BodyId,
     feet: [BodyId; 2],
+    toes: [BodyId; 2],
     fext: Vec<Wrench>,
     ground: (Vector3<f64>, Vector3<f64>),
 }
 
 impl Feedforward {
-    /// Feedforward for `lola` (feet `l_foot`, `r_foot`, the bodies carrying the soles).
+    /// Feedforward for `lola` (feet `l_foot`, `r_foot`, the bodies carrying the soles, and
+    /// their toe segments `l_toe`, `r_toe`).
     pub fn new(lola: &LolaModel) -> Result<Self, WalkError> {
         let model = lola.model.clone();
         let root = floating_root(&model)?;
         let id = |n: &str| body(&model, n);
         let feet = [id("l_foot")?, id("r_foot")?];
+        let toes = [id("l_toe")?, id("r_toe")?];
         Ok(Self {
+            toes,
             data: Data::new(&model),
             fext: vec![Wrench::zero(); model.nbodies()],
             ground: (Vector3::zeros(), Vector3::zeros()),
@@ -67,19 +73,20 @@ impl Feedforward {
         }
     }
 
-    /// Foot wrenches (body frame, about the body origin) carrying the ground wrench of the
-    /// motion `(q, qd, qdd)` in the support phase of `s`: foot `i` takes `F_i = w_i F` at its
-    /// origin `p_i` ([`Self::shares`] of the motion's own ZMP) and the share `w_i` of the
-    /// residual moment `M_0 - sum p_i x F_i` (small: the ZMP lies near the segment), so that the
-    /// wrenches sum to the required one and each foot's centre of pressure stays near its sole.
-    /// The last RNEA's kinematics stay in the workspace.
+    /// Support wrenches `[left, right]` (body frame, about the body origin, with the body that
+    /// carries each: the foot, or its toe segment in toe-off) of the ground wrench of the motion
+    /// `(q, qd, qdd)` in the support phase of `s`: carrier `i` takes `F_i = w_i F` at its
+    /// origin `p_i` ([`Self::shares`] of the motion's own ZMP between the carriers) and the
+    /// share `w_i` of the residual moment `M_0 - sum p_i x F_i` (small: the ZMP lies near the
+    /// segment), so that the wrenches sum to the required one and each foot's centre of pressure
+    /// stays near its sole. The last RNEA's kinematics stay in the workspace.
     pub fn foot_wrenches(
         &mut self,
         q: &DVector<f64>,
         qd: &DVector<f64>,
         qdd: &DVector<f64>,
         s: &PatternSample,
-    ) -> Result<[Wrench; 2], WalkError> {
+    ) -> Result<[(BodyId, Wrench); 2], WalkError> {
         let (f, m0) = wrench(
             &self.model,
             &mut self.data,
@@ -88,14 +95,18 @@ impl Feedforward {
             &Vector3::zeros(),
         )?;
         self.ground = (f, m0);
-        let p = self.feet.map(|b| self.data.world_pos[b]);
+        let carrier = [0, 1].map(|i| match s.feet[i].contact {
+            Contact::Toe => self.toes[i],
+            _ => self.feet[i],
+        });
+        let p = carrier.map(|b| self.data.world_pos[b]);
         let zmp = self.zmp().unwrap_or_else(|| 0.5 * (p[0] + p[1]).xy());
         let w = Self::shares(s.phase, zmp, p[0].xy(), p[1].xy());
         let fi = w.map(|wi| f * wi);
         let residual = m0 - p[0].cross(&fi[0]) - p[1].cross(&fi[1]);
         Ok([0, 1].map(|i| {
-            let rt = self.data.world_rot[self.feet[i]].transpose();
-            Wrench::new(rt * (residual * w[i]), rt * fi[i])
+            let rt = self.data.world_rot[carrier[i]].transpose();
+            (carrier[i], Wrench::new(rt * (residual * w[i]), rt * fi[i]))
         }))
     }
 
@@ -116,21 +127,29 @@ impl Feedforward {
         s: &PatternSample,
     ) -> Result<&DVector<f64>, WalkError> {
         let feet = self.foot_wrenches(q, qd, qdd, s)?;
-        self.with_wrenches(q, qd, qdd, feet)
+        self.with_wrenches(q, qd, qdd, &feet)
     }
 
-    /// Generalized forces with explicit foot wrenches `[left, right]` (body frame, about the
-    /// body origin), e.g. measured ones.
+    /// Generalized forces with explicit external wrenches (body frame, about the body origin)
+    /// on the bodies they name, e.g. the measured contact wrenches of every foot and toe; a
+    /// body out of range is an error.
     pub fn with_wrenches(
         &mut self,
         q: &DVector<f64>,
         qd: &DVector<f64>,
         qdd: &DVector<f64>,
-        feet: [Wrench; 2],
+        wrenches: &[(BodyId, Wrench)],
     ) -> Result<&DVector<f64>, WalkError> {
         self.fext.fill(Wrench::zero());
-        for (b, w) in self.feet.iter().zip(feet) {
-            self.fext[*b] = w;
+        for &(b, w) in wrenches {
+            let slot = self
+                .fext
+                .get_mut(b)
+                .ok_or_else(|| WalkError::InvalidParameter {
+                    name: "wrenches",
+                    reason: format!("body {b} out of range ({} bodies)", self.model.nbodies()),
+                })?;
+            *slot += w;
         }
         inverse_dynamics(&self.model, &mut self.data, q, qd, qdd, Some(&self.fext))
             .map_err(model_err)

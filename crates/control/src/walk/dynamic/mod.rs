@@ -8,6 +8,7 @@
 //! - [`tracking`]: [`TrackingController`], PD per joint + feedforward, joint-torque mode.
 //! - [`run`]: [`run_dynamic_walk`] on the Lola Type 2 plant (RK4, h = 1 ms), time series and
 //!   the verdict.
+//! - [`slip`]: the sides' contact per cycle (load, toe load, heel lift, friction use, slip).
 //!
 //! Resolved choices and limits:
 //! - The IK model and the plant are both `lola::build(Type2)`: the same `q`/`v` layout, the
@@ -24,16 +25,23 @@
 //!   pattern, hard limits in the IK, see [`crate::walk`]): the summary's `limit_excess` is 0
 //!   for the default walk, so `end_stops = true` (the plant's stops at the joint ranges,
 //!   [`biped_sim::passive`]) and `clamp_margin = Some(m)` (the reference clamped into the
-//!   limits shrunk by `m`, reported per sample) do not change the reference itself. The sole
-//!   contact model has no toe contact: while the heel is lifted the rear foot rests on the
-//!   contact points of its front edge, below the toe joint axis.
+//!   limits shrunk by `m`, reported per sample) do not change the reference itself.
+//! - Contact: the plant's toe segments have contact points of their own
+//!   ([`biped_sim::plant::PlantConfig::toe_contacts`]): while the heel is lifted the rear foot
+//!   stands on its flat toe, and the feedforward puts that foot's share of the ground wrench
+//!   on the toe ([`feedforward`]). The series and summary use each side's wrench (foot and
+//!   toe summed, [`biped_sim::contact::ContactOutput::sides`]).
 //! - Verdict: walked = no fall (base height never below its start minus `fall_drop`, trunk
 //!   tilt never above `max_tilt`) and forward progress `>= min_progress` of the planned
-//!   base travel.
+//!   base travel. Apart from it, the friction verdict ([`slip`]: friction use, slip speed,
+//!   slip = a side sliding [`SLIP_DISTANCE`] within one contact). A simulation that diverges
+//!   numerically ([`biped_sim::SimError::is_divergence`]) is a fall at its last finite sample
+//!   (`diverged` in the summary), not an error.
 
 pub mod feedforward;
 pub mod reference;
 pub mod run;
+pub mod slip;
 pub mod stabiliser;
 mod summary;
 pub mod tracking;
@@ -41,6 +49,7 @@ pub mod tracking;
 pub use feedforward::Feedforward;
 pub use reference::{build_reference, JointReference, ReferenceOptions};
 pub use run::{run_dynamic_walk, start_on_ground, DynamicWalkRun};
+pub use slip::{SideContact, SideSample, SlipTracker, SLIP_DISTANCE, SLIP_POINTS};
 pub use stabiliser::{Stabiliser, StabiliserGains};
 pub use summary::{DynamicWalkSeries, DynamicWalkSummary};
 pub use tracking::TrackingController;
@@ -78,6 +87,8 @@ pub struct DynamicWalkParams {
     pub end_stops: bool,
     /// Multibody ZMP correction iterations of the pattern (see [`mod@reference`]).
     pub zmp_iterations: usize,
+    /// Coulomb friction coefficient `mu` of the ground (default: the contact law's, 0.8).
+    pub friction: f64,
     /// Standing time simulated after the walk \[s].
     pub hold_time: f64,
     /// Fall: base lower than its start height minus this \[m].
@@ -104,6 +115,7 @@ impl Default for DynamicWalkParams {
             clamp_margin: None,
             end_stops: true,
             zmp_iterations: 2,
+            friction: biped_sim::contact::ContactParams::default().friction,
             hold_time: 1.0,
             fall_drop: 0.25,
             max_tilt: 0.3,
@@ -153,6 +165,9 @@ impl DynamicWalkParams {
         }
         if !nonneg(self.min_progress) {
             return bad("min_progress", "must be finite and >= 0");
+        }
+        if !pos(self.friction) {
+            return bad("friction", "must be finite and > 0");
         }
         Ok(())
     }

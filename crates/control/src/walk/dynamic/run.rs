@@ -2,6 +2,7 @@
 //! series and pass criteria.
 
 use super::reference::{build_reference, JointReference};
+use super::slip::{SideContact, SideSample};
 use super::tracking::TrackingController;
 use super::{DynamicWalkParams, DynamicWalkSeries, DynamicWalkSummary};
 use crate::pattern::WalkingPattern;
@@ -30,6 +31,7 @@ pub fn run_dynamic_walk(p: &DynamicWalkParams) -> Result<DynamicWalkRun, WalkErr
     p.validate()?;
     let mut config = PlantConfig::default();
     config.passive.end_stops = p.end_stops;
+    config.contact.friction = p.friction;
     let lp = lola_plant(LolaType::Type2, config).map_err(model_err)?;
     let (mut plant, lola) = (lp.plant, lp.lola);
     let pattern = WalkingPattern::generate(&walk_pattern_params(
@@ -76,7 +78,8 @@ pub fn start_on_ground(plant: &Plant, q: &DVector<f64>) -> Result<DVector<f64>, 
 }
 
 /// Runs the loop in chunks of 50 ms, recording every cycle; stops at the end of the chunk in
-/// which a fall is detected (so the series run up to 50 ms past `fell_at`).
+/// which a fall is detected (so the series run up to 50 ms past `fell_at`), or where the
+/// simulation diverged ([`SimError::is_divergence`]: a fall at the last finite sample).
 fn simulate(
     sim: &mut Simulation<TrackingController>,
     r: &JointReference,
@@ -89,8 +92,9 @@ fn simulate(
         .plant()
         .floating_base()
         .ok_or_else(|| model_err("plant without floating base"))?;
+    let sides = SideContact::new(sim.plant().contact())?;
     let fall_height = sim.state()[qi + 2] - p.fall_drop;
-    let mut fell_at = None;
+    let (mut fell_at, mut diverged) = (None, false);
     let rhs0 = sim.plant().rhs_count();
     let start = Instant::now();
     let chunk = 0.05_f64;
@@ -100,23 +104,30 @@ fn simulate(
             if s.t.last().is_some_and(|&t| f.t <= t + 1e-9) {
                 return Ok(());
             }
-            record(&mut s, f, r, qi);
+            record(&mut s, f, r, qi, &sides);
             let (z, tilt) = (f.z[qi + 2], *s.tilt.last().unwrap_or(&0.0));
             if fell_at.is_none() && (z < fall_height || tilt > p.max_tilt) {
                 fell_at = Some(f.t);
             }
             Ok(())
         };
-        sim.run(span, &mut obs).map_err(model_err)?;
+        match sim.run(span, &mut obs) {
+            Ok(_) => {}
+            Err(e) if e.is_divergence() => {
+                diverged = true;
+                fell_at = fell_at.or(Some(s.t.last().copied().unwrap_or(sim.time())));
+            }
+            Err(e) => return Err(model_err(e)),
+        }
     }
     let wall = start.elapsed().as_secs_f64();
     let rhs = sim.plant().rhs_count() - rhs0;
-    let summary = DynamicWalkSummary::evaluate(&s, r, p, (wall, rhs), fell_at);
+    let summary = DynamicWalkSummary::evaluate(&s, r, p, (wall, rhs), (fell_at, diverged));
     Ok(DynamicWalkRun { series: s, summary })
 }
 
 /// Appends one cycle of signals.
-fn record(s: &mut DynamicWalkSeries, f: &Frame, r: &JointReference, qi: usize) {
+fn record(s: &mut DynamicWalkSeries, f: &Frame, r: &JointReference, qi: usize, c: &SideContact) {
     let z = f.z;
     let k = r.index(f.t);
     s.t.push(f.t);
@@ -130,12 +141,15 @@ fn record(s: &mut DynamicWalkSeries, f: &Frame, r: &JointReference, qi: usize) {
         .max(1e-300);
     s.tilt
         .push((1.0 - 2.0 * (x * x + y * y) / n2).clamp(-1.0, 1.0).acos());
-    let feet = &f.plant.last_outputs().contact.feet;
-    let foot = |i: usize, g: fn(&biped_sim::contact::FootWrench) -> f64| feet.get(i).map_or(0.0, g);
-    s.foot_fz
-        .push([foot(0, |w| w.force.z), foot(1, |w| w.force.z)]);
-    s.tau_z
-        .push([foot(0, |w| w.torque.z), foot(1, |w| w.torque.z)]);
+    let [left, right] = c.sample(f.plant, f.z);
+    let both = |g: fn(&SideSample) -> f64| [g(&left), g(&right)];
+    s.foot_fz.push(both(|w| w.fz));
+    s.tau_z.push(both(|w| w.tau_z));
+    s.toe_fz.push(both(|w| w.toe_fz));
+    s.heel_lift.push(both(|w| w.heel_lift));
+    s.friction_usage.push(both(|w| w.friction_usage));
+    s.slip_speed.push(both(|w| w.slip_speed));
+    s.points_in_contact.push([left.points, right.points]);
     let q = r.row(&r.q, k);
     let err = q
         .iter()

@@ -1,6 +1,7 @@
 //! Time series and summary (verdict) of a dynamic walk.
 
 use super::reference::JointReference;
+use super::slip::{SideSample, SlipTracker};
 use super::DynamicWalkParams;
 use serde::Serialize;
 
@@ -15,11 +16,21 @@ pub struct DynamicWalkSeries {
     pub planned_base_x: Vec<f64>,
     /// Trunk (base) tilt: angle between its z axis and the vertical \[rad].
     pub tilt: Vec<f64>,
-    /// Vertical contact force on `[left, right]` foot \[N].
+    /// Vertical contact force on the `[left, right]` side (foot and toe) \[N].
     pub foot_fz: Vec<[f64; 2]>,
-    /// Vertical ground torque on `[left, right]` foot about its sole point \[N m] (the foot
-    /// F/T sensor's wrench, world axes).
+    /// Vertical ground torque on the `[left, right]` side (foot and toe) about the foot's sole
+    /// point \[N m] (world axes).
     pub tau_z: Vec<[f64; 2]>,
+    /// Vertical contact force on the `[left, right]` toe segment \[N].
+    pub toe_fz: Vec<[f64; 2]>,
+    /// Heel lift (pitch) of the `[left, right]` foot \[rad].
+    pub heel_lift: Vec<[f64; 2]>,
+    /// Friction use of the `[left, right]` side ([`super::slip`]).
+    pub friction_usage: Vec<[f64; 2]>,
+    /// Slip speed of the `[left, right]` side ([`super::slip`]) \[m/s].
+    pub slip_speed: Vec<[f64; 2]>,
+    /// Contact points of the `[left, right]` side touching the ground.
+    pub points_in_contact: Vec<[usize; 2]>,
     /// Largest joint tracking error `max_j |q_ref - q|` \[rad].
     pub tracking_error: Vec<f64>,
 }
@@ -34,6 +45,11 @@ impl DynamicWalkSeries {
             tilt: Vec::with_capacity(n),
             foot_fz: Vec::with_capacity(n),
             tau_z: Vec::with_capacity(n),
+            toe_fz: Vec::with_capacity(n),
+            heel_lift: Vec::with_capacity(n),
+            friction_usage: Vec::with_capacity(n),
+            slip_speed: Vec::with_capacity(n),
+            points_in_contact: Vec::with_capacity(n),
             tracking_error: Vec::with_capacity(n),
         }
     }
@@ -77,6 +93,21 @@ pub struct DynamicWalkSummary {
     pub limit_excess: f64,
     /// The plant had end stops at the joint ranges ([`DynamicWalkParams::end_stops`]).
     pub end_stops: bool,
+    /// The simulation diverged numerically (non-finite state, a mass matrix or mechanism loop
+    /// that broke down, [`biped_sim::SimError::is_divergence`]); then `fell_at` is the time of
+    /// the last finite sample and the series end there.
+    pub diverged: bool,
+    /// Largest friction use `|F_t| / (mu F_n)` of a side in contact ([`super::slip`]).
+    pub max_friction_usage: f64,
+    /// Largest slip speed (load-weighted sliding speed) of a side in contact \[m/s]
+    /// ([`super::slip`]).
+    pub max_slip_speed: f64,
+    /// Largest sliding distance of a side within one contact \[m].
+    pub max_slip_distance: f64,
+    /// First time a side slid [`super::slip::SLIP_DISTANCE`] within one contact \[s].
+    pub slip_at: Option<f64>,
+    /// No side slipped (`slip_at` is `None`); independent of `walked`.
+    pub friction_kept: bool,
 }
 
 impl DynamicWalkSummary {
@@ -86,7 +117,7 @@ impl DynamicWalkSummary {
         r: &JointReference,
         p: &DynamicWalkParams,
         (wall_time, rhs_evaluations): (f64, u64),
-        fell_at: Option<f64>,
+        (fell_at, diverged): (Option<f64>, bool),
     ) -> Self {
         let first_last = |v: &[f64]| match (v.first(), v.last()) {
             (Some(a), Some(b)) => b - a,
@@ -109,6 +140,16 @@ impl DynamicWalkSummary {
             .zip(s.foot_fz.iter().flatten())
             .filter(|(_, fz)| **fz > 1.0)
             .map(|(t, _)| t.abs());
+        let mut slip = SlipTracker::default();
+        let samples = s.slip_speed.iter().zip(&s.points_in_contact);
+        for (&t, (v, n)) in s.t.iter().zip(samples) {
+            let side = |i: usize| SideSample {
+                slip_speed: v[i],
+                points: n[i],
+                ..SideSample::default()
+            };
+            slip.add(t, r.dt, &[side(0), side(1)]);
+        }
         Self {
             walked: fell_at.is_none() && progress >= p.min_progress,
             fell_at,
@@ -131,6 +172,12 @@ impl DynamicWalkSummary {
             max_clamp: r.max_clamp,
             limit_excess: r.max_excess,
             end_stops: p.end_stops,
+            diverged,
+            max_friction_usage: max(&mut s.friction_usage.iter().flatten().copied()),
+            max_slip_speed: slip.max_speed,
+            max_slip_distance: slip.max_distance,
+            slip_at: slip.slip_at,
+            friction_kept: slip.slip_at.is_none(),
         }
     }
 }
