@@ -93,17 +93,27 @@ pub fn run(args: WalkArgs) -> CliResult {
     };
     let violations = report::violation_lines(&runs);
     summary.insert("violations".into(), serde_json::to_value(&violations)?);
+    if let Some(v) = dynamic
+        .as_ref()
+        .and_then(|(_, r)| dynamic_violation(&r.summary))
+    {
+        if let Some(list) = summary.get_mut("violations").and_then(Value::as_array_mut) {
+            list.push(Value::String(v));
+        }
+    }
     outdir::stamp(&mut summary, Status::Completed);
     outdir::write_json(&out.path().join("summary.json"), &Value::Object(summary))?;
     out.commit()?;
     report::print(&args, &lola, &runs, dynamic.as_ref())?;
     outln!("wrote {}", args.out.display())?;
+    let mut lines = report::violation_lines(&runs);
     if let Some(s) = dynamic.as_ref().map(|(_, r)| &r.summary) {
         if !s.walked {
             return Err(verdict_error(s).into());
         }
+        lines.extend(dynamic_violation(s));
     }
-    report::violations(&runs, args.allow_violations)
+    report::violations(&lines, args.allow_violations)
 }
 
 /// Error of a walk stopped by SIGINT / SIGTERM between two of its parts.
@@ -160,11 +170,22 @@ fn walk_all(
     Ok((runs, Some((method, run))))
 }
 
+/// The dynamic walk's friction violation, if a foot slipped.
+fn dynamic_violation(s: &DynamicWalkSummary) -> Option<String> {
+    s.slip_at.map(|t| {
+        format!(
+            "dynamic walk: friction: a foot slid {:.1} mm within one contact by t = {t:.3} s",
+            1e3 * s.max_slip_distance
+        )
+    })
+}
+
 /// One-line error of a failed dynamic walk.
 fn verdict_error(s: &DynamicWalkSummary) -> String {
-    let what = match s.fell_at {
-        Some(t) => format!("the robot fell at t = {t:.3} s"),
-        None => "the robot did not advance enough".to_string(),
+    let what = match (s.fell_at, s.diverged) {
+        (Some(t), true) => format!("the simulation diverged at t = {t:.3} s (a fall)"),
+        (Some(t), false) => format!("the robot fell at t = {t:.3} s"),
+        (None, _) => "the robot did not advance enough".to_string(),
     };
     format!(
         "--dynamic: {what}: {:.2} m of {:.2} m planned, max trunk tilt {:.3} rad",

@@ -52,7 +52,12 @@ pub fn print(
 }
 
 /// One verdict line: its name, which verdict, the words for kept and not kept.
-type Check = (&'static str, fn(&WalkVerdicts) -> &Verdict, &'static str, &'static str);
+type Check = (
+    &'static str,
+    fn(&WalkVerdicts) -> &Verdict,
+    &'static str,
+    &'static str,
+);
 
 /// Whether the walks kept the joint ranges, stayed clear of self-collision and inside the
 /// friction cone: one line per check over all methods.
@@ -110,10 +115,9 @@ pub fn violation_lines(runs: &[WalkRun]) -> Vec<String> {
         .collect()
 }
 
-/// Exit status of the walks: the first violated limit as the error, or with `allow` each
-/// violation as a warning and success.
-pub fn violations(runs: &[WalkRun], allow: bool) -> CliResult {
-    let lines = violation_lines(runs);
+/// Exit status for the violation `lines`: the first as the error, or with `allow` each as a
+/// warning and success.
+pub fn violations(lines: &[String], allow: bool) -> CliResult {
     if !allow {
         return match lines.first() {
             Some(first) => {
@@ -127,6 +131,7 @@ pub fn violations(runs: &[WalkRun], allow: bool) -> CliResult {
     }
     Ok(ExitCode::SUCCESS)
 }
+
 /// The dynamic walk's line.
 fn dynamic_line(method: Method, run: &DynamicWalkRun) -> io::Result<()> {
     let s = &run.summary;
@@ -142,5 +147,16 @@ fn dynamic_line(method: Method, run: &DynamicWalkRun) -> io::Result<()> {
         s.max_tracking_error,
         s.peak_abs_tau_z,
         s.realtime_factor
-    )
+    )?;
+    match s.slip_at {
+        None => outln!(
+            "dynamic slip: none (largest sliding {:.1} mm within one contact, at up to {:.2} m/s)",
+            1e3 * s.max_slip_distance,
+            s.max_slip_speed
+        ),
+        Some(t) => outln!(
+            "dynamic slip: a foot SLIPPED at t = {t:.3} s (up to {:.1} mm within one contact)",
+            1e3 * s.max_slip_distance
+        ),
+    }
 }
