@@ -257,6 +257,15 @@ fn open_meshes_have_no_volume() {
     let m = mesh::parse_stl(&binary_stl(&(v, t)), "open.stl").unwrap();
     assert!(!m.is_closed());
     assert_eq!(m.volume(), None);
+    // two unit cubes touching along an edge (four triangles on it): closed, volume 2
+    let (mut v, mut t) = box_mesh([1.0; 3]);
+    let (w, u) = box_mesh([1.0; 3]);
+    v.extend(w.iter().map(|p| [p[0] + 1.0, p[1] + 1.0, p[2]]));
+    t.extend(u.iter().map(|f| f.map(|i| i + 8)));
+    let m = mesh::parse_stl(&binary_stl(&(v, t)), "two.stl").unwrap();
+    assert_eq!(m.vertices().len(), 14);
+    assert!(m.is_closed());
+    assert!((m.volume().unwrap() - 2.0).abs() < 1e-12);
 }
 
 #[test]

@@ -88,7 +88,9 @@ impl PackagePath {
             if dir.join(package).is_dir() {
                 roots.push(dir.join(package));
             }
-            if dir.file_name().is_some_and(|n| n == package) && dir.is_dir() {
+            // the folder's own name, also for `DIR/..` or a symbolic link
+            let real = dir.canonicalize().unwrap_or_else(|_| dir.clone());
+            if real.file_name().is_some_and(|n| n == package) && dir.is_dir() {
                 roots.push(dir.clone());
             }
             for root in roots {
@@ -139,9 +141,9 @@ mod tests {
         let got = path.resolve("package://pkg/meshes/m.stl", &tmp).unwrap();
         assert_eq!(got, b.join("pkg/meshes/m.stl"));
         // a folder named like the package is the package root itself
-        let direct = PackagePath::new(vec![b.join("pkg")], None);
+        let direct = PackagePath::new(vec![b.join("pkg/meshes/..")], None);
         let got = direct.resolve("package://pkg/meshes/m.stl", &tmp).unwrap();
-        assert_eq!(got, b.join("pkg/meshes/m.stl"));
+        assert_eq!(got, b.join("pkg/meshes/../meshes/m.stl"));
         // found package, missing file: the first resolved candidate is named
         let err = path.resolve("package://pkg/x.stl", &tmp).unwrap_err();
         assert_eq!(

@@ -78,19 +78,19 @@ impl Mesh {
         &self.triangles
     }
 
-    /// Whether the surface is closed and consistently oriented: every directed edge of a
-    /// triangle appears once, and its reverse once.
+    /// Whether the surface is closed and consistently oriented: every edge is used as often
+    /// from `a` to `b` as from `b` to `a` (CAD exports often have bodies touching along an
+    /// edge, used by four triangles; the divergence theorem holds for them too).
     pub fn is_closed(&self) -> bool {
-        let mut edges: HashMap<(u32, u32), u32> = HashMap::with_capacity(3 * self.triangles.len());
+        // +1 for a -> b with a < b, -1 for the reverse: closed iff every sum is zero
+        let mut edges: HashMap<(u32, u32), i64> = HashMap::with_capacity(3 * self.triangles.len());
         for &[a, b, c] in &self.triangles {
-            for e in [(a, b), (b, c), (c, a)] {
-                *edges.entry(e).or_insert(0) += 1;
+            for (p, q) in [(a, b), (b, c), (c, a)] {
+                let (key, sign) = if p < q { ((p, q), 1) } else { ((q, p), -1) };
+                *edges.entry(key).or_insert(0) += sign;
             }
         }
-        !edges.is_empty()
-            && edges
-                .iter()
-                .all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1))
+        !edges.is_empty() && edges.values().all(|&n| n == 0)
     }
 
     /// The enclosed volume by the divergence theorem, `|sum (v0 . (v1 x v2)) / 6|` over the
