@@ -17,6 +17,7 @@ pub enum SsvCommand {
     /// Load a collision-model file and print every segment pair's distance in a posture.
     Model(model::ModelArgs),
     /// Fit a collision model (SSVs containing each link's shapes, sampled pairs) to a URDF.
+    #[command(long_about = fit::FIT_HELP)]
     Fit(fit::FitArgs),
     /// Time the six distance functions on random inputs (thesis Table 6.9).
     Bench {

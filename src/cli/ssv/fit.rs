@@ -20,7 +20,6 @@ use std::process::ExitCode;
 
 /// Arguments of `biped ssv fit`.
 #[derive(Args)]
-#[command(long_about = FIT_HELP)]
 pub struct FitArgs {
     /// URDF file whose `<collision>` elements are fitted.
     urdf: PathBuf,
@@ -46,7 +45,7 @@ pub struct FitArgs {
 }
 
 /// The inputs and outputs of `biped ssv fit`.
-const FIT_HELP: &str = "\
+pub const FIT_HELP: &str = "\
 Fit a first SSV collision model to the collision geometry of a URDF file.
 
 Input: the URDF's <collision> elements (box, cylinder, sphere, capsule, mesh). Mesh files are
@@ -54,11 +53,12 @@ STL (binary or ASCII) or OBJ. package://PKG/rest resolves through --package-path
 or DIR/rest when DIR is named PKG), then ROS_PACKAGE_PATH (colon-separated); relative file names
 resolve against the URDF's folder; file:// URIs are paths.
 
-Each link with collision geometry becomes one segment on its body: per element a point SSV
+Each link with collision geometry becomes one segment on its body (links welded to the world: a
+body named after the root link), in the body frame: per element a point SSV
 (sphere), a line SSV (capsule, cylinder, long box or mesh) or a rectangle of two triangle SSVs
 (flat box or mesh), whichever contains the shape with the least volume.
 
-Pairs: every two segments on bodies that are not parent and child, kept if they come closer than
+Pairs: every two segments on different bodies that are not parent and child, kept if they come closer than
 the activation distance in at least one of --samples random configurations within the joint
 limits (seeded) and are not in contact in 95 % or more of them.
 
