@@ -36,7 +36,7 @@ pub struct FitArgs {
     /// Random configurations within the joint limits sampled to choose the pairs.
     #[arg(long, default_value_t = 2000, value_parser = clap::value_parser!(u32).range(1..))]
     samples: u32,
-    /// Activation distance d_a of the model [m]: pairs that never come closer are left out.
+    /// Activation distance d_a of the model in metres: pairs that never come closer are left out.
     #[arg(long, default_value_t = 0.05)]
     activation_distance: f64,
     /// Seed of the sampled configurations.

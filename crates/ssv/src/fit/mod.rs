@@ -7,7 +7,7 @@
 //!   swept by half the smallest, the line SSV of its longest axis, the bounding sphere;
 //! - points (mesh vertices) -> the smallest of the bounding sphere, the line SSV along the
 //!   principal axis (radius = largest distance from the axis, segment shortened as far as
-//!   containment allows) and the rectangle in the plane of the two principal axes ([`cloud`]).
+//!   containment allows) and the rectangle in the plane of the two principal axes.
 //!
 //! Every fit is checked against the points it must contain (box corners, cylinder rims, mesh
 //! vertices) with the library's own [`distance`](crate::distance()); a positive distance left by
