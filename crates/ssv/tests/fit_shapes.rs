@@ -211,3 +211,70 @@ fn pairs_by_sampling() {
     let kept: Vec<bool> = counts.iter().map(|p| p.kept(4)).collect();
     assert_eq!(kept, [false, false, true, false, false]);
 }
+
+/// Points on the surface of a capsule (axis x from -0.5 to 0.5, radius 0.1): the fit to the
+/// cloud is that capsule, its segment shortened from the extent 1.2 to the axis length 1.0.
+#[test]
+fn a_sampled_capsule_is_recovered() {
+    let mut points = Vec::new();
+    for i in 0..=20 {
+        for k in 0..16 {
+            let phi = 2.0 * PI * k as f64 / 16.0;
+            let (s, c) = phi.sin_cos();
+            points.push(Point3::new(-0.5 + i as f64 / 20.0, 0.1 * c, 0.1 * s));
+            // the caps: latitude theta from the rim (0) to the tip (pi/2)
+            let theta = PI / 2.0 * i as f64 / 20.0;
+            let (st, ct) = theta.sin_cos();
+            for side in [-1.0, 1.0] {
+                points.push(Point3::new(
+                    side * (0.5 + 0.1 * st),
+                    0.1 * ct * c,
+                    0.1 * ct * s,
+                ));
+            }
+        }
+    }
+    let at = pose([0.3, 0.1, -0.2], [0.5, 0.2, -1.0]);
+    let f = fit(
+        &Geometry::Points {
+            points: &points,
+            volume: None,
+        },
+        &at,
+    )
+    .unwrap();
+    assert_eq!(f.kind, FitKind::Line);
+    let v = f.ssvs[0].vertices();
+    assert!(
+        ((v[1] - v[0]).norm() - 1.0).abs() < 1e-9,
+        "length {}",
+        (v[1] - v[0]).norm()
+    );
+    assert!((f.ssvs[0].radius() - 0.1).abs() < 1e-9);
+    let mid = at * Point3::origin();
+    assert!((nalgebra::center(&v[0], &v[1]) - mid).norm() < 1e-9);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1000))]
+    /// Random clouds of 1 to 40 points in an anisotropic box at a random pose: every point is
+    /// inside the fit, whose volume is at most that of the bounding sphere about the centroid.
+    #[test]
+    fn random_clouds_are_contained(
+        raw in proptest::collection::vec(proptest::array::uniform3(-1.0f64..1.0), 1..40),
+        scale in proptest::array::uniform3(1e-3f64..1.0),
+        rpy in proptest::array::uniform3(-PI..PI),
+    ) {
+        let points: Vec<Point3<f64>> = raw
+            .iter()
+            .map(|p| Point3::new(p[0] * scale[0], p[1] * scale[1], p[2] * scale[2]))
+            .collect();
+        let at = pose([0.2, -0.1, 0.4], rpy);
+        let f = fit(&Geometry::Points { points: &points, volume: None }, &at).unwrap();
+        let placed: Vec<_> = points.iter().map(|p| at * p).collect();
+        prop_assert!(worst(&f.ssvs, &placed) <= 1e-9);
+        let c = placed.iter().map(|p| p.coords).sum::<Vector3<f64>>() / placed.len() as f64;
+        let r = placed.iter().map(|p| (p.coords - c).norm()).fold(0.0, f64::max);
+        prop_assert!(f.volume <= 4.0 / 3.0 * PI * r.powi(3) * (1.0 + 1e-9) + 1e-15);
+    }
+}

@@ -63,13 +63,17 @@ fn principal_axes(points: &[Point3<f64>]) -> Matrix3<f64> {
     }
 }
 
-/// The sphere about `center` through the farthest point.
-fn sphere(points: &[Point3<f64>], center: Point3<f64>) -> Candidate {
-    let r = points
-        .iter()
-        .map(|p| (p - center).norm())
-        .fold(0.0, f64::max);
-    Candidate::Point(center, r)
+/// The smaller of the spheres about the centroid and about `mid` (the middle of the
+/// principal-axes box) through the farthest point.
+fn sphere(points: &[Point3<f64>], mid: Point3<f64>) -> Candidate {
+    let centroid =
+        Point3::from(points.iter().map(|p| p.coords).sum::<Vector3<f64>>() / points.len() as f64);
+    let radius = |c: Point3<f64>| points.iter().map(|p| (p - c).norm()).fold(0.0, f64::max);
+    let (r_mid, r_centroid) = (radius(mid), radius(centroid));
+    match r_mid <= r_centroid {
+        true => Candidate::Point(mid, r_mid),
+        false => Candidate::Point(centroid, r_centroid),
+    }
 }
 
 /// The shortest interval `[a, b]` of the first axis such that each point `(t, h)` (axial
