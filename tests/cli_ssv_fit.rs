@@ -11,6 +11,7 @@ use common::run;
 use nalgebra::{Isometry3, Point3};
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
+use std::process::Command;
 
 /// A fresh folder for one test.
 fn folder(name: &str) -> PathBuf {
@@ -106,18 +107,30 @@ fn robot(dir: &Path, far_mesh: &str) -> PathBuf {
     path
 }
 
-fn fit(urdf: &Path, out: &Path, extra: &[&str]) -> (i32, String, String) {
-    let mut args = vec![
+/// `biped ssv fit URDF --out OUT EXTRA...` with `ROS_PACKAGE_PATH` set to `ros` (unset if
+/// `None`, so that the caller's environment does not change the search path).
+fn fit_with(urdf: &Path, out: &Path, extra: &[&str], ros: Option<&str>) -> (i32, String, String) {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_biped"));
+    cmd.args([
         "ssv",
         "fit",
         urdf.to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
-    ];
-    args.extend(extra);
-    let o = run(&args, "");
+    ]);
+    cmd.args(extra).current_dir(env!("CARGO_TARGET_TMPDIR"));
+    match ros {
+        Some(path) => cmd.env("ROS_PACKAGE_PATH", path),
+        None => cmd.env_remove("ROS_PACKAGE_PATH"),
+    };
+    let o = cmd.output().unwrap();
     let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
     (o.status.code().unwrap(), text(&o.stdout), text(&o.stderr))
+}
+
+/// `biped ssv fit` without `ROS_PACKAGE_PATH`.
+fn fit(urdf: &Path, out: &Path, extra: &[&str]) -> (i32, String, String) {
+    fit_with(urdf, out, extra, None)
 }
 
 #[test]
@@ -197,6 +210,14 @@ fn fits_shapes_and_chooses_pairs_by_sampling() {
     let o = run(&["ssv", "model", out.to_str().unwrap()], "");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(String::from_utf8_lossy(&o.stdout).contains("c - d"));
+    // the package found through ROS_PACKAGE_PATH instead of --package-path
+    let ros = format!("/nonexistent:{}", pkgs.display());
+    let (code, ros_stdout, stderr) = fit_with(&urdf, &out, &[], Some(&ros));
+    assert_eq!(
+        (code, ros_stdout.as_str()),
+        (0, stdout.as_str()),
+        "{stderr}"
+    );
     // floating root: the base gets its own body, the same pairs
     let (code, stdout, _) = fit(
         &urdf,
