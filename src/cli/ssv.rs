@@ -1,6 +1,7 @@
-//! `biped ssv query|bench`: the SSV distance library on the command line.
+//! `biped ssv query|model|fit|bench`: the SSV distance library on the command line.
 
 mod bench;
+mod fit;
 mod model;
 mod query;
 
@@ -15,6 +16,9 @@ pub enum SsvCommand {
     Query,
     /// Load a collision-model file and print every segment pair's distance in a posture.
     Model(model::ModelArgs),
+    /// Fit a collision model (SSVs containing each link's shapes, sampled pairs) to a URDF.
+    #[command(long_about = fit::FIT_HELP)]
+    Fit(fit::FitArgs),
     /// Time the six distance functions on random inputs (thesis Table 6.9).
     Bench {
         /// Print one JSON object `{"PP": ns, ...}` instead of the table.
@@ -47,5 +51,6 @@ pub fn run(cmd: SsvCommand) -> CliResult {
         SsvCommand::Query => query::run(),
         SsvCommand::Bench { json } => bench::run(json),
         SsvCommand::Model(args) => model::run(args),
+        SsvCommand::Fit(args) => fit::run(args),
     }
 }

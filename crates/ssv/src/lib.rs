@@ -47,10 +47,15 @@
 //! - [`model`]: [`CollisionModel`], segments on bodies, segment pairs and `d_a`.
 //! - [`format`](mod@format): the TOML file format of collision models (load, save).
 //! - [`error`]: [`SsvError`], the error of invalid primitive input.
+//! - [`mesh`]: triangle meshes from STL and OBJ files, their volume and closedness.
+//! - [`fit`]: SSVs that contain spheres, capsules, cylinders, boxes and meshes; pair choice
+//!   by sampled configurations.
 
 pub mod distance;
 pub mod error;
+pub mod fit;
 pub mod format;
+pub mod mesh;
 pub mod model;
 pub mod obb;
 pub mod primitives;

@@ -14,7 +14,8 @@
 //! - Rotational inertias with all entries below 1e-12 kg m^2 are taken as zero (with a warning).
 //! - Joint limits and `<dynamics>` are read into [`UrdfModel::joints`] ([`JointProps`], see
 //!   `joints` for their conventions); the model itself carries none of them.
-//! - Meshes, visuals, collisions and transmissions are ignored; `<visual>`,
+//! - Meshes, visuals, collisions and transmissions are ignored by the import (the link geometry
+//!   is read separately by [`read_geometry_file`], mesh files found by [`PackagePath`]); `<visual>`,
 //!   `<collision>` and `<material>` elements are removed before parsing (see `scan`). `<mimic>` tags are
 //!   ignored with a warning (the joints stay independent) unless [`UrdfOptions::reject_mimic`].
 //! - The root element must be `<robot>`, link and joint names must not be empty, and elements
@@ -26,9 +27,11 @@
 //! configurations.
 
 mod error;
+mod geometry;
 mod joints;
 mod lines;
 mod markup;
+mod package;
 mod scan;
 mod source;
 pub mod srdf;
@@ -36,7 +39,9 @@ mod topology;
 mod tree;
 
 pub use error::{InvalidElement, Location, UrdfError};
+pub use geometry::{read_geometry_file, read_geometry_str, GeometryElement, LinkGeometry, Shape};
 pub use joints::JointProps;
+pub use package::{PackagePath, ResolveError};
 pub use scan::MAX_DEPTH;
 
 use crate::{BodyId, Model};
