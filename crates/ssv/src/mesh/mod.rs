@@ -188,3 +188,14 @@ fn invalid(file: &str, at: String, problem: impl Into<String>) -> MeshError {
         problem: problem.into(),
     }
 }
+
+/// `data` as UTF-8 text, or an error naming the first line that is not.
+fn text<'a>(data: &'a [u8], file: &str) -> Result<&'a str, MeshError> {
+    std::str::from_utf8(data).map_err(|e| {
+        let line = 1 + data[..e.valid_up_to()]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count();
+        invalid(file, format!("line {line}"), "not UTF-8 text")
+    })
+}

@@ -2,18 +2,12 @@
 //! or `i/t/n`, 1-based or negative = relative to the last vertex; polygons fanned into
 //! triangles). Other statements (normals, texture coordinates, groups, materials) are skipped.
 
-use super::{invalid, Mesh, MeshError};
+use super::{invalid, text, Mesh, MeshError};
 use nalgebra::Point3;
 
 /// Parses OBJ bytes; `file` labels errors.
 pub(super) fn parse(data: &[u8], file: &str) -> Result<Mesh, MeshError> {
-    let text = std::str::from_utf8(data).map_err(|e| {
-        let line = 1 + data[..e.valid_up_to()]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count();
-        invalid(file, format!("line {line}"), "not UTF-8 text")
-    })?;
+    let text = text(data, file)?;
     let mut vertices: Vec<Point3<f64>> = Vec::new();
     let mut triangles = Vec::new();
     let mut face = Vec::new();

@@ -2,7 +2,7 @@
 //! (`solid ... facet ... outer loop vertex x y z ... endloop ... endsolid`). A file whose size
 //! matches its binary triangle count is binary, else one starting with `solid` is ASCII.
 
-use super::{invalid, Mesh, MeshError, Welder};
+use super::{invalid, text, Mesh, MeshError, Welder};
 use nalgebra::Point3;
 
 /// Parses STL bytes; `file` labels errors.
@@ -63,13 +63,7 @@ fn binary(data: &[u8], n: usize, file: &str) -> Result<Mesh, MeshError> {
 /// An ASCII STL file: the vertices of each `outer loop` (three or more, fanned into
 /// triangles).
 fn ascii(data: &[u8], file: &str) -> Result<Mesh, MeshError> {
-    let text = std::str::from_utf8(data).map_err(|e| {
-        let line = 1 + data[..e.valid_up_to()]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count();
-        invalid(file, format!("line {line}"), "not UTF-8 text")
-    })?;
+    let text = text(data, file)?;
     let mut weld = Welder::new();
     let mut triangles = Vec::new();
     let mut polygon: Option<Vec<u32>> = None;
