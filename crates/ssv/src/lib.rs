@@ -47,6 +47,7 @@
 //! - [`model`]: [`CollisionModel`], segments on bodies, segment pairs and `d_a`.
 //! - [`format`](mod@format): the TOML file format of collision models (load, save).
 //! - [`error`]: [`SsvError`], the error of invalid primitive input.
+//! - [`query`]: the JSON form of primitives and distance queries (`biped ssv query`, Python).
 
 pub mod distance;
 pub mod error;
@@ -54,6 +55,7 @@ pub mod format;
 pub mod model;
 pub mod obb;
 pub mod primitives;
+pub mod query;
 pub mod result;
 pub mod segment;
 
