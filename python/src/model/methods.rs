@@ -136,6 +136,7 @@ impl PyModel {
 
     /// Joint accelerations `qdd` for `(q, v, tau)`, optional body wrenches `fext`.
     #[pyo3(signature = (q, v, tau, algorithm = "on", fext = None, threads = None))]
+    #[allow(clippy::too_many_arguments)] // the Python signature: state, options, keywords
     fn forward_dynamics<'py>(
         &self,
         py: Python<'py>,

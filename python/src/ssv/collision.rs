@@ -22,6 +22,9 @@ type PairRow = (
     Option<[f64; 3]>,
 );
 
+/// The closest pair: names of both segments, distance and closest points.
+type ClosestRow = (String, String, f64, [f64; 3], [f64; 3]);
+
 /// A collision model and the named postures of its file.
 #[pyclass(module = "biped._native", name = "CollisionModel")]
 pub struct PyCollisionModel {
@@ -174,7 +177,7 @@ impl PyCollisionModel {
     }
 
     /// The closest computed pair `(a, b, distance, point_a, point_b)`, or `None`.
-    fn min_distance(&self) -> Option<(String, String, f64, [f64; 3], [f64; 3])> {
+    fn min_distance(&self) -> Option<ClosestRow> {
         let (k, c) = self.model.min_distance()?;
         let p = self.model.pairs()[k];
         let name = |i: usize| self.model.segments()[i].name().to_string();

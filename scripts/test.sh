@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Everything the project's tests need, from a clean clone with only the Rust toolchain and
+# python3: the Rust test suite (release profile), then the Python package `biped` built into
+# a venv under the workspace's target dir and tested with pytest against the CLI just built.
+# Usage: scripts/test.sh   (CARGO_TARGET_DIR is honoured; the venv goes under it)
+set -euo pipefail
+start=$(date +%s)
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$root/target}
+
+cargo test --release --workspace
+# The CLI is the reference of the Python tests; `cargo test` built it, this makes sure.
+cargo build --release --bin biped
+
+venv=$CARGO_TARGET_DIR/python-venv
+[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
+"$venv/bin/pip" install -q --upgrade pip
+"$venv/bin/pip" install -q maturin numpy pytest
+# maturin runs cargo with the same CARGO_TARGET_DIR and release profile, so the compiled
+# dependencies of the tests above are reused; only pyo3 (extension-module) and the bindings
+# are compiled again. No build isolation: the venv's maturin builds the wheel (its one
+# dependency, numpy, is installed above).
+"$venv/bin/pip" install -q --no-build-isolation --force-reinstall --no-deps ./python
+BIPED_REQUIRE_CLI=1 "$venv/bin/python" -m pytest -q python/tests
+
+echo "scripts/test.sh: all passed in $(($(date +%s) - start)) s"
