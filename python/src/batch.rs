@@ -6,6 +6,7 @@ use crate::error::{biped_err, guard};
 use numpy::{AllowTypeChange, PyArray1, PyArrayLikeDyn, PyArrayMethods};
 use pyo3::prelude::*;
 use std::ops::Range;
+use std::sync::OnceLock;
 
 /// The inputs of a call: per argument the values of all states, row after row.
 pub struct Inputs {
@@ -112,10 +113,13 @@ fn non_finite(name: &str, batched: bool, state: usize, entry: usize) -> String {
 
 /// Number of threads for `n` states: `threads` if given (>= 1), else the available cores.
 fn thread_count(threads: Option<usize>, n: usize) -> PyResult<usize> {
+    // asked once: on Linux the answer comes from cgroup files (tens of microseconds)
+    static CORES: OnceLock<usize> = OnceLock::new();
     let t = match threads {
         Some(0) => return Err(biped_err("threads: must be at least 1")),
         Some(t) => t,
-        None => std::thread::available_parallelism().map_or(1, |p| p.get()),
+        None if n <= 1 => 1,
+        None => *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |p| p.get())),
     };
     Ok(t.min(n).max(1))
 }
@@ -196,5 +200,8 @@ pub fn to_array<'py>(
     }
     dims.extend_from_slice(shape);
     let flat = PyArray1::from_vec(py, values);
-    Ok(flat.reshape(dims)?.into_any())
+    match dims.len() {
+        1 => Ok(flat.into_any()),
+        _ => Ok(flat.reshape(dims)?.into_any()),
+    }
 }
