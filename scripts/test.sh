@@ -9,9 +9,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$root/target}
 
+# Also builds target/release/biped (for the CLI tests), the reference of the Python tests.
 cargo test --release --workspace
-# The CLI is the reference of the Python tests; `cargo test` built it, this makes sure.
-cargo build --release --bin biped
 
 venv=$CARGO_TARGET_DIR/python-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
