@@ -14,6 +14,7 @@ cargo test --release --workspace
 
 venv=$CARGO_TARGET_DIR/python-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
+export PATH="$venv/bin:$PATH"  # the maturin build backend runs the venv's `maturin`
 "$venv/bin/pip" install -q --upgrade pip
 "$venv/bin/pip" install -q maturin numpy pytest
 # maturin runs cargo with the same CARGO_TARGET_DIR and release profile, so the compiled
