@@ -11,6 +11,7 @@ export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$root/target}
 
 # Also builds target/release/biped (for the CLI tests), the reference of the Python tests.
 cargo test --release --workspace
+rust_done=$(date +%s)
 
 venv=$CARGO_TARGET_DIR/python-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
@@ -24,4 +25,5 @@ export PATH="$venv/bin:$PATH"  # the maturin build backend runs the venv's `matu
 "$venv/bin/pip" install -q --no-build-isolation --force-reinstall --no-deps ./python
 BIPED_REQUIRE_CLI=1 "$venv/bin/python" -m pytest -q python/tests
 
-echo "scripts/test.sh: all passed in $(($(date +%s) - start)) s"
+end=$(date +%s)
+echo "scripts/test.sh: all passed in $((end - start)) s (cargo test $((rust_done - start)) s, Python $((end - rust_done)) s)"
