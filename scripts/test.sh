@@ -18,9 +18,10 @@ venv=$CARGO_TARGET_DIR/python-venv
 export PATH="$venv/bin:$PATH"  # the maturin build backend runs the venv's `maturin`
 "$venv/bin/pip" install -q --upgrade pip
 "$venv/bin/pip" install -q maturin numpy pytest
-# maturin runs cargo with the same CARGO_TARGET_DIR and release profile, so the compiled
-# dependencies of the tests above are reused; only pyo3 (extension-module) and the bindings
-# are compiled again. No build isolation: the venv's maturin builds the wheel (its one
+# maturin runs cargo with the same CARGO_TARGET_DIR and release profile. Cargo resolves
+# features for the selected package only, so the dependencies whose features differ from the
+# workspace test build (nalgebra, serde, ...) and pyo3 are compiled once more on the first run
+# and reused after. No build isolation: the venv's maturin builds the wheel (its one
 # dependency, numpy, is installed above).
 "$venv/bin/pip" install -q --no-build-isolation --force-reinstall --no-deps ./python
 BIPED_REQUIRE_CLI=1 "$venv/bin/python" -m pytest -q python/tests
