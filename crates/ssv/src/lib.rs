@@ -50,6 +50,7 @@
 //! - [`mesh`]: triangle meshes from STL and OBJ files, their volume and closedness.
 //! - [`fit`]: SSVs that contain spheres, capsules, cylinders, boxes and meshes; pair choice
 //!   by sampled configurations.
+//! - [`query`]: the JSON form of primitives and distance queries (`biped ssv query`, Python).
 
 pub mod distance;
 pub mod error;
@@ -59,6 +60,7 @@ pub mod mesh;
 pub mod model;
 pub mod obb;
 pub mod primitives;
+pub mod query;
 pub mod result;
 pub mod segment;
 
