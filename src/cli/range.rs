@@ -302,6 +302,16 @@ pub mod walk {
     pub const FRICTION: Quantity = real("--friction", "", 0.05, 3.0, "");
 }
 
+/// Options of `biped ssv fit`.
+pub mod ssv_fit {
+    use super::{real, whole, Quantity};
+
+    /// `--samples`.
+    pub const SAMPLES: Quantity = whole("--samples", 1.0, 1e6);
+    /// `--activation-distance`.
+    pub const ACTIVATION_DISTANCE: Quantity = real("--activation-distance", "", 0.001, 1.0, "m");
+}
+
 #[cfg(test)]
 mod tests {
     use super::simulate::{CONTACT, EVERY, STEP};

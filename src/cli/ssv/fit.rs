@@ -3,7 +3,7 @@
 
 use crate::cli::files::WithPath;
 use crate::cli::out::outln;
-use crate::cli::CliResult;
+use crate::cli::{range, CliResult};
 use biped_dynamics::urdf::{
     load_file, read_geometry_file, GeometryElement, PackagePath, Shape, UrdfModel, UrdfOptions,
 };
@@ -26,23 +26,26 @@ pub struct FitArgs {
     /// URDF file whose `<collision>` elements are fitted.
     urdf: PathBuf,
     /// Collision-model file to write (TOML, the format `biped ssv model` reads).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     out: PathBuf,
     /// Folder to look up `package://PKG/...` mesh references in, before ROS_PACKAGE_PATH
     /// (repeatable).
-    #[arg(long = "package-path", value_name = "DIR")]
+    #[arg(long = "package-path", value_name = "DIR", allow_hyphen_values = true)]
     package_path: Vec<PathBuf>,
     /// Give the root link a free joint (its own body) instead of welding it to the world.
     #[arg(long)]
     floating: bool,
-    /// Random configurations within the joint limits sampled to choose the pairs.
-    #[arg(long, default_value_t = 2000, value_parser = clap::value_parser!(u32).range(1..))]
+    /// Random configurations within the joint limits sampled to choose the pairs (1 to 10^6).
+    #[arg(long, value_name = "N", default_value_t = 2000, allow_hyphen_values = true,
+          value_parser = |s: &str| range::ssv_fit::SAMPLES.parse_whole(s).map(|n| n as u32))]
     samples: u32,
-    /// Activation distance d_a of the model in metres: pairs that never come closer are left out.
-    #[arg(long, default_value_t = 0.05)]
+    /// Activation distance d_a of the model in metres: pairs that never come closer are left out
+    /// (0.001 to 1).
+    #[arg(long, value_name = "M", default_value_t = 0.05, allow_hyphen_values = true,
+          value_parser = |s: &str| range::ssv_fit::ACTIVATION_DISTANCE.parse(s))]
     activation_distance: f64,
-    /// Seed of the sampled configurations.
-    #[arg(long, default_value_t = 1)]
+    /// Seed of the sampled configurations (a whole number >= 0).
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
     seed: u64,
 }
 
