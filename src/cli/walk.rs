@@ -238,6 +238,16 @@ fn write_dynamic(run: &DynamicWalkRun, out: &Path) -> Result<(), Box<dyn std::er
             ("fz_right", s.foot_fz[k][1]),
             ("tau_z_left", s.tau_z[k][0]),
             ("tau_z_right", s.tau_z[k][1]),
+            ("toe_fz_left", s.toe_fz[k][0]),
+            ("toe_fz_right", s.toe_fz[k][1]),
+            ("heel_lift_left", s.heel_lift[k][0]),
+            ("heel_lift_right", s.heel_lift[k][1]),
+            ("friction_usage_left", s.friction_usage[k][0]),
+            ("friction_usage_right", s.friction_usage[k][1]),
+            ("slip_speed_left", s.slip_speed[k][0]),
+            ("slip_speed_right", s.slip_speed[k][1]),
+            ("points_in_contact_left", s.points_in_contact[k][0] as f64),
+            ("points_in_contact_right", s.points_in_contact[k][1] as f64),
             ("tracking_error", s.tracking_error[k]),
         ] {
             rec.set(name, v)?;
