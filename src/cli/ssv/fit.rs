@@ -8,6 +8,7 @@ use biped_dynamics::urdf::{
     load_file, read_geometry_file, GeometryElement, PackagePath, Shape, UrdfModel, UrdfOptions,
 };
 use biped_dynamics::Model;
+use biped_sim::record::write_whole;
 use biped_ssv::fit::pairs::{candidates, count};
 use biped_ssv::fit::{fit, Fitted, Geometry};
 use biped_ssv::{format, mesh, CollisionModel, Segment};
@@ -123,7 +124,9 @@ pub fn run(args: FitArgs) -> CliResult {
     let mut zero = vec![Isometry3::identity(); bodies.len()];
     sampler.poses(&urdf.model, &urdf.model.neutral(), &mut zero)?;
     let poses = BTreeMap::from([("zero".to_string(), zero)]);
-    write_atomically(&args.out, &format::to_toml_string(&out, &poses)?)?;
+    let text = format::to_toml_string(&out, &poses)?;
+    // A reader never sees a partial file: a temporary sibling renamed over `--out`.
+    write_whole(&args.out, |tmp| std::fs::write(tmp, &text)).with_path(&args.out)?;
     for l in &links {
         outln!("{}", link_line(l))?;
     }
@@ -241,22 +244,4 @@ fn fit_element(
         }
     };
     Ok(fitted.map_err(|e| element.invalid("geometry", e.to_string()))?)
-}
-
-/// Writes `text` to a temporary sibling of `path` and renames it over `path`, so that a
-/// reader never sees a partial file.
-fn write_atomically(path: &Path, text: &str) -> Result<(), Box<dyn std::error::Error>> {
-    let name = path
-        .file_name()
-        .ok_or_else(|| format!("--out {}: not a file name", path.display()))?;
-    let mut tmp_name = std::ffi::OsString::from(".");
-    tmp_name.push(name);
-    tmp_name.push(format!(".tmp{}", std::process::id()));
-    let tmp = path.with_file_name(tmp_name);
-    std::fs::write(&tmp, text).with_path(&tmp)?;
-    if let Err(e) = std::fs::rename(&tmp, path) {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(Box::new(Err::<(), _>(e).with_path(path).unwrap_err()));
-    }
-    Ok(())
 }
