@@ -39,6 +39,9 @@ class Model:
     @staticmethod
     def dill(n: int) -> Model:
         """Featherstone's Dill(n) benchmark tree (2^n revolute bodies, 0 <= n <= 16)."""
+    def __reduce__(self) -> tuple:
+        """Pickling: the model is rebuilt from its URDF text (not its path), Lola variant or
+        Dill level, so it can be sent to another process or machine (a Ray worker)."""
     @property
     def nq(self) -> int:
         """Number of position coordinates."""

@@ -18,16 +18,23 @@ pub struct PyModel {
     label: String,
     warnings: Vec<String>,
     work: Mutex<Work>,
+    source: Source,
 }
 
 impl PyModel {
-    fn new(model: biped_dynamics::Model, label: String, warnings: Vec<String>) -> Self {
+    fn new(
+        model: biped_dynamics::Model,
+        label: String,
+        warnings: Vec<String>,
+        source: Source,
+    ) -> Self {
         let work = Mutex::new(Work::new(&model));
         Self {
             model,
             label,
             warnings,
             work,
+            source,
         }
     }
 
@@ -152,3 +159,6 @@ fn reference(name: &str) -> PyResult<JacobianFrame> {
 }
 
 mod methods;
+mod source;
+
+use source::Source;

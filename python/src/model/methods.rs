@@ -2,11 +2,10 @@
 //! one state (1-D arrays) or a batch (2-D arrays, one row per state) and an optional
 //! `threads` count for batches.
 
+use super::source::{Pickled, Source};
 use super::{point_arg, urdf_error, PyModel};
-use crate::error::biped_err;
 use crate::kernels::{self, CentroidalMatrix};
-use biped_dynamics::urdf::{load_file, UrdfOptions};
-use biped_robots::lola::{self, LolaType};
+use biped_dynamics::urdf::read_file;
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use std::path::PathBuf;
@@ -22,39 +21,39 @@ impl PyModel {
         floating: bool,
         reject_mimic: bool,
     ) -> PyResult<Self> {
-        let options = UrdfOptions {
+        let text = read_file(&path).map_err(urdf_error)?;
+        let file = path.display().to_string();
+        let source = Source::Urdf {
+            text,
+            file,
             floating,
             reject_mimic,
         };
-        let imported = py
-            .detach(|| load_file(&path, &options))
-            .map_err(urdf_error)?;
-        let warnings = imported.warnings.iter().map(|w| w.to_string()).collect();
-        Ok(Self::new(
-            imported.model,
-            path.display().to_string(),
-            warnings,
-        ))
+        source.build(py)
     }
 
     /// The Lola-like biped: `"type2"` (rigid drives) or `"type3"` (elastic gears).
     #[staticmethod]
-    fn lola(kind: &str) -> PyResult<Self> {
-        let t: LolaType = kind.parse().map_err(biped_err)?;
-        let built = lola::build(t).map_err(|e| biped_err(e.to_string()))?;
-        Ok(Self::new(built.model, format!("Lola {t:?}"), Vec::new()))
+    fn lola(py: Python<'_>, kind: &str) -> PyResult<Self> {
+        Source::Lola(kind.to_string()).build(py)
     }
 
     /// Featherstone's Dill(n) benchmark tree (2^n revolute bodies).
     #[staticmethod]
-    fn dill(n: i64) -> PyResult<Self> {
-        let max = biped_dynamics::dill::MAX_DILL_LEVEL;
-        let level = u32::try_from(n)
-            .ok()
-            .filter(|&l| l <= max)
-            .ok_or_else(|| biped_err(format!("dill: level {n} is not in 0..{max}")))?;
-        let model = biped_dynamics::dill::dill(level).map_err(|e| biped_err(e.to_string()))?;
-        Ok(Self::new(model, format!("Dill({n})"), Vec::new()))
+    fn dill(py: Python<'_>, n: i64) -> PyResult<Self> {
+        Source::Dill(n).build(py)
+    }
+
+    /// Rebuilds a pickled model (see `__reduce__`).
+    #[staticmethod]
+    fn _restore(py: Python<'_>, pickled: Pickled) -> PyResult<Self> {
+        Source::unpickled(pickled)?.build(py)
+    }
+
+    /// Pickling: the model is rebuilt from its URDF text, Lola variant or Dill level.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (Pickled,))> {
+        let restore = py.get_type::<PyModel>().getattr("_restore")?;
+        Ok((restore, (self.source.pickled(),)))
     }
 
     /// Number of position coordinates.

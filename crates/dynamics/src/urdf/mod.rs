@@ -107,18 +107,20 @@ pub struct UrdfModel {
 /// ```
 pub fn load_file(path: impl AsRef<Path>, options: &UrdfOptions) -> Result<UrdfModel, UrdfError> {
     let path = path.as_ref();
+    load_str(&read_file(path)?, &path.display().to_string(), options)
+}
+
+/// The text of a URDF file, with the errors of [`load_file`] (unreadable, not UTF-8).
+pub fn read_file(path: impl AsRef<Path>) -> Result<String, UrdfError> {
+    let path = path.as_ref();
     let file = path.display().to_string();
-    let text = lines::read_text(path).map_err(|e| match e {
+    lines::read_text(path).map_err(|e| match e {
         lines::ReadError::Io(source) => UrdfError::Io {
             file: file.clone(),
             source,
         },
-        lines::ReadError::NotUtf8 { line } => UrdfError::NotUtf8 {
-            file: file.clone(),
-            line,
-        },
-    })?;
-    load_str(&text, &file, options)
+        lines::ReadError::NotUtf8 { line } => UrdfError::NotUtf8 { file, line },
+    })
 }
 
 /// Converts URDF text; `file` labels the source in error messages.
