@@ -91,27 +91,17 @@ pub fn run(args: WalkArgs) -> CliResult {
             return Err(format!("{reason}{note}").into());
         }
     };
-    let violations = report::violation_lines(&runs);
-    summary.insert("violations".into(), serde_json::to_value(&violations)?);
-    if let Some(v) = dynamic
-        .as_ref()
-        .and_then(|(_, r)| dynamic_violation(&r.summary))
-    {
-        if let Some(list) = summary.get_mut("violations").and_then(Value::as_array_mut) {
-            list.push(Value::String(v));
-        }
-    }
+    let dynamic_summary = dynamic.as_ref().map(|(_, r)| &r.summary);
+    let mut lines = report::violation_lines(&runs);
+    lines.extend(dynamic_summary.and_then(dynamic_violation));
+    summary.insert("violations".into(), serde_json::to_value(&lines)?);
     outdir::stamp(&mut summary, Status::Completed);
     outdir::write_json(&out.path().join("summary.json"), &Value::Object(summary))?;
     out.commit()?;
     report::print(&args, &lola, &runs, dynamic.as_ref())?;
     outln!("wrote {}", args.out.display())?;
-    let mut lines = report::violation_lines(&runs);
-    if let Some(s) = dynamic.as_ref().map(|(_, r)| &r.summary) {
-        if !s.walked {
-            return Err(verdict_error(s).into());
-        }
-        lines.extend(dynamic_violation(s));
+    if let Some(s) = dynamic_summary.filter(|s| !s.walked) {
+        return Err(verdict_error(s).into());
     }
     report::violations(&lines, args.allow_violations)
 }
