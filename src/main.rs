@@ -5,11 +5,10 @@
 //! sub-command (exit status 1). A reader that closes stdout early (`biped ... | head -1`)
 //! ends the run quietly with status 0.
 
-mod cli;
-
+use biped::cli;
 use clap::error::ErrorKind;
 use clap::{Parser, Subcommand};
-use cli::out::{errln, is_broken_pipe};
+use cli::out::{diagnostic, is_broken_pipe};
 use std::process::ExitCode;
 
 /// Efficient algorithms for biped robots (Schwienbacher 2014), in Rust.
@@ -58,7 +57,7 @@ fn main() -> ExitCode {
         Ok(code) => code,
         Err(err) if is_broken_pipe(&*err) => ExitCode::SUCCESS,
         Err(err) => {
-            errln!("error: {err}");
+            diagnostic(format_args!("error: {err}"));
             ExitCode::FAILURE
         }
     }
@@ -74,7 +73,7 @@ fn usage_error(e: &clap::Error) -> ExitCode {
             ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2))
         }
         _ => {
-            errln!("{}", one_line(e));
+            diagnostic(format_args!("{}", one_line(e)));
             ExitCode::from(2)
         }
     }

@@ -3,11 +3,15 @@
 ``Model`` loads a robot (URDF, the Lola-like biped, Dill(n)) and computes forward and inverse
 dynamics, mass matrices, frame poses and Jacobians, the centre of mass and centroidal
 momentum, for one state (1-D arrays) or a batch (2-D arrays, one row per state, computed in
-parallel). ``biped.ssv`` holds the swept-sphere distances. Invalid input raises
+parallel). ``biped.ssv`` holds the swept-sphere distances. ``simulate``, ``simulate_batch``
+and ``walk`` run ``biped simulate`` / ``biped walk`` with their options as keywords and return
+the summary and the recorded signals as numpy arrays; ``biped.distributed.sweep`` runs many
+simulations as Ray tasks. Invalid input raises
 ``BipedError`` (a ``ValueError``); unreadable files raise ``OSError``.
 """
 
 from ._native import BipedError, Model
 from . import ssv
+from .run import simulate, simulate_batch, walk
 
-__all__ = ["BipedError", "Model", "ssv"]
+__all__ = ["BipedError", "Model", "simulate", "simulate_batch", "ssv", "walk"]

@@ -165,3 +165,17 @@ def ssv_distances(
     kind_a: str, a: ArrayLike, kind_b: str, b: ArrayLike, threads: Optional[int] = None
 ) -> Array:
     """Row-wise distances: (N, 10) rows ``[distance, point_a, point_b, normal]``."""
+
+def simulate(words: List[str], controller: Optional[object] = None) -> Tuple[dict, Dict[str, Array]]:
+    """``biped simulate`` with command-line ``words``: ``(summary, signals)`` (see ``biped.run``)."""
+
+def simulate_batch(
+    batch: List[List[str]], threads: Optional[int] = None
+) -> List[Union[Tuple[dict, Dict[str, Array]], BipedError]]:
+    """Every run of ``batch`` in parallel; results in input order, a failed run's error in its slot."""
+
+def walk(words: List[str]) -> Tuple[dict, Dict[str, Dict[str, Array]]]:
+    """``biped walk`` with command-line ``words``: ``(summary, tables by file stem)``."""
+
+def option_spec(command: str) -> Dict[str, Tuple[bool, bool]]:
+    """Options of ``biped <command>``: ``{keyword: (takes_value, repeatable)}``."""

@@ -112,7 +112,7 @@ fn non_finite(name: &str, batched: bool, state: usize, entry: usize) -> String {
 }
 
 /// Number of threads for `n` states: `threads` if given (>= 1), else the available cores.
-fn thread_count(threads: Option<usize>, n: usize) -> PyResult<usize> {
+pub fn thread_count(threads: Option<usize>, n: usize) -> PyResult<usize> {
     // asked once: on Linux the answer comes from cgroup files (tens of microseconds)
     static CORES: OnceLock<usize> = OnceLock::new();
     let t = match threads {

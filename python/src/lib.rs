@@ -8,6 +8,7 @@ mod batch;
 mod error;
 mod kernels;
 mod model;
+mod run;
 mod ssv;
 
 use pyo3::prelude::*;
@@ -18,5 +19,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("BipedError", m.py().get_type::<error::BipedError>())?;
     m.add_class::<model::PyModel>()?;
     ssv::register(m)?;
+    run::register(m)?;
     Ok(())
 }

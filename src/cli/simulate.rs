@@ -10,8 +10,9 @@
 //! per control period (`--every N`: every N-th, and always the final state). The exit status
 //! is 0 when the run completes, whatever the pass criteria say (`--check`: 1 if one fails).
 
+mod execute;
 mod model;
-mod output;
+pub mod output;
 mod parse;
 mod progress;
 mod recording;
@@ -20,10 +21,11 @@ pub(crate) mod setup;
 
 use super::outdir::{self, OutputDir};
 use super::{interrupt, CliResult};
-use biped_sim::record::Recorder;
-use biped_sim::simulation::{Frame, Signals};
+use biped_sim::controller::Hook;
+use biped_sim::plant::Plant;
 use biped_sim::SimError;
 use clap::Args;
+pub use execute::{parse_args, Abandoned, Outcome, Prepared, SetupError};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -131,51 +133,91 @@ pub struct SimulateArgs {
 
 /// Run `biped simulate`.
 pub fn run(args: SimulateArgs) -> CliResult {
-    let job = setup::Job::from_args(&args)?;
-    let target = args
-        .out
-        .clone()
-        .unwrap_or_else(|| PathBuf::from("out/simulate").join(job.scenario_name()));
-    let mut signals = Signals::new(&job.plant, true);
-    let duration = job.scenario.duration;
-    let mut rec = Recorder::with_capacity(job.rows());
-    // Columns registered and the buffer mapped before the timed loop (no page faults in it).
-    signals.register(&mut rec)?;
-    output::register_total(&mut rec)?;
-    let chosen = output::chosen_plots(&rec, &args.plot)?;
-    let out = OutputDir::create(&target, "--out")?;
-    rec.prefault();
-    let mut bar = progress::Progress::new(duration);
-    let mut last_t = 0.0;
-    let due = job.recording();
-    let mut observe = |f: &Frame| -> Result<(), SimError> {
+    let mut bar = None;
+    let mut stop = |t: f64, duration: f64| -> Result<(), SimError> {
         if interrupt::requested() {
             return Err(SimError::Stopped(outdir::interrupted_reason().into()));
         }
-        last_t = f.t;
-        if due.at(f.t) {
-            signals.record(f, &mut rec)?;
-            output::record_total(f, &mut rec)?;
-        }
-        bar.update(f.t);
+        let bar = bar.get_or_insert_with(|| progress::Progress::new(duration));
+        bar.update(t);
         Ok(())
     };
-    let info = job.info();
-    let result = job.run(&mut observe);
-    bar.finish();
-    let (summary, sim) = match result {
-        Ok(done) => done,
-        Err(e) => return Err(output::abandon(out, &rec, &info, last_t, &e).into()),
-    };
-    let plant = sim.plant();
-    let files = output::write_all(&rec, plant, &summary, &info, &chosen, out.path())?;
-    out.commit()?;
-    let pd = sim.controller();
-    report::print_report(&summary, plant, &rec, &info, pd, &target, &files)?;
+    let result = execute(&args, None, &mut stop, true);
+    if let Some(mut bar) = bar {
+        bar.finish();
+    }
+    let Run {
+        done,
+        files,
+        target,
+    } = result.map_err(|e| e.to_string())?;
+    let (summary, plant, rec) = (&done.summary, done.sim.plant(), &done.rec);
+    let pd = done.sim.controller().inner();
+    let target = target.unwrap_or_default();
+    report::print_report(summary, plant, rec, &done.info, pd, &target, &files)?;
     let failed = args.check && !summary.passed();
     Ok(if failed {
         ExitCode::FAILURE
     } else {
         ExitCode::SUCCESS
+    })
+}
+
+/// A run that completed, with the files it wrote and where.
+pub struct Run {
+    /// The finished simulation.
+    pub done: Outcome,
+    /// The files written (none when nothing was written).
+    pub files: Vec<String>,
+    /// The output folder, if written.
+    pub target: Option<PathBuf>,
+}
+
+/// Makes a controller hook for the plant of the run (e.g. knowing its actuators).
+pub type MakeHook<'a> = Box<dyn FnOnce(&Plant) -> Hook + Send + 'a>;
+
+/// Runs `biped simulate` with `args`: the controller hook that `hook` makes runs after the
+/// scenario's joint PD each cycle, `stop` is asked once per control period with the time and
+/// the run's duration. With `write` (or `--out` given) the output folder is replaced as a whole: the signals, plots and `summary.json` of a completed run, or of
+/// a run that failed or was stopped, the signals until then and a summary saying so.
+pub fn execute(
+    args: &SimulateArgs,
+    hook: Option<MakeHook<'_>>,
+    stop: &mut dyn FnMut(f64, f64) -> Result<(), SimError>,
+    write: bool,
+) -> Result<Run, SetupError> {
+    let mut prepared = Prepared::new(args)?;
+    let hook = hook.map(|make| make(&prepared.job.plant));
+    let target = (write || args.out.is_some()).then(|| {
+        args.out
+            .clone()
+            .unwrap_or_else(|| PathBuf::from("out/simulate").join(prepared.job.scenario_name()))
+    });
+    let chosen = output::chosen_plots(&prepared.rec, &args.plot).map_err(|e| e.to_string())?;
+    let out = match &target {
+        Some(dir) => Some(OutputDir::create(dir, "--out").map_err(|e| e.to_string())?),
+        None => None,
+    };
+    // The buffer mapped before the timed loop (no page faults in it).
+    prepared.rec.prefault();
+    let done = match (prepared.run(hook, stop), out) {
+        (Ok(done), out) => (done, out),
+        (Err(a), Some(out)) => {
+            return Err(output::abandon(out, &a.rec, &a.info, a.t, &a.error).into())
+        }
+        (Err(a), None) => return Err(output::abandoned_line(a.t, &a.error).into()),
+    };
+    let (done, files) = match done {
+        (done, Some(out)) => {
+            let files = output::write_all(&done, &chosen, out.path()).map_err(|e| e.to_string())?;
+            out.commit().map_err(|e| e.to_string())?;
+            (done, files)
+        }
+        (done, None) => (done, Vec::new()),
+    };
+    Ok(Run {
+        done,
+        files,
+        target,
     })
 }

@@ -7,18 +7,18 @@ use super::outdir::{self, OutputDir, Status};
 use super::{interrupt, range, CliResult};
 use crate::cli::out::outln;
 use biped_control::pattern::WalkingPattern;
-use biped_control::walk::run::RECORDED_JOINTS;
 use biped_control::walk::{
     run_dynamic_walk, run_walk, walk_pattern_params, DynamicWalkParams, DynamicWalkRun,
     DynamicWalkSummary, Method, WalkParams, WalkRun,
 };
 use biped_robots::lola::{self, LolaModel, LolaType};
 use biped_sim::Recorder;
-use clap::Args;
+use clap::{Args, FromArgMatches};
 use serde_json::{Map, Value};
 use std::path::{Path, PathBuf};
 
 mod report;
+pub mod tables;
 
 /// Arguments of `biped walk`; the numbers are checked against [`range::walk`] while parsing.
 #[derive(Args)]
@@ -62,31 +62,112 @@ pub struct WalkArgs {
     /// such a walk exits non-zero.
     #[arg(long)]
     allow_violations: bool,
-    /// Output directory.
-    #[arg(long, value_name = "DIR", default_value = "out/walk")]
-    out: PathBuf,
+    /// Output directory (default `out/walk`).
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
 }
 
 /// Run `biped walk`.
 pub fn run(args: WalkArgs) -> CliResult {
+    let walk = execute(&args, true)?;
+    let target = args.target();
+    report::print(&args, &walk.lola, &walk.runs, walk.dynamic.as_ref())?;
+    outln!("wrote {}", target.display())?;
+    if let Some(line) = walk.failure() {
+        return Err(line.into());
+    }
+    report::violations(&walk.lines, args.allow_violations)
+}
+
+/// A finished `biped walk`: the model, every method's walk, the dynamic walk if asked for, the
+/// summary of `summary.json`, the violation lines and the tables of the CSV files.
+pub struct Walk {
+    /// The walked model.
+    pub lola: LolaModel,
+    /// The kinematic walk of each method.
+    pub runs: Vec<WalkRun>,
+    /// The dynamic walk and the method it tracked.
+    pub dynamic: Option<(Method, DynamicWalkRun)>,
+    /// `summary.json`'s content.
+    pub summary: Value,
+    /// One line per violated verdict.
+    pub lines: Vec<String>,
+    /// The tables by file stem (`none`, `none_trajectory`, ..., `dynamic`).
+    pub tables: Vec<(String, Recorder)>,
+}
+
+impl Walk {
+    /// The one-line error of a dynamic walk that fell or did not advance.
+    pub fn failure(&self) -> Option<String> {
+        let (_, run) = self.dynamic.as_ref()?;
+        (!run.summary.walked).then(|| verdict_error(&run.summary))
+    }
+
+    /// The first violation as the error `biped walk` exits with (none with `allow`).
+    pub fn violation(&self, allow: bool) -> Option<String> {
+        let first = self.lines.first().filter(|_| !allow)?;
+        Some(format!(
+            "{first} (--allow-violations to accept such a walk)"
+        ))
+    }
+}
+
+/// Parses the options of `biped walk` given as command-line words (without the program and
+/// sub-command names).
+pub fn parse_args<I, S>(words: I) -> Result<WalkArgs, String>
+where
+    I: IntoIterator<Item = S>,
+    S: Into<String>,
+{
+    let cmd = WalkArgs::augment_args(clap::Command::new("walk").no_binary_name(true));
+    let words: Vec<String> = words.into_iter().map(Into::into).collect();
+    let one_line = |e: clap::Error| {
+        let text = e.to_string();
+        let line = text.lines().find(|l| !l.trim().is_empty()).unwrap_or(&text);
+        line.trim_start_matches("error: ").to_string()
+    };
+    let matches = cmd.try_get_matches_from(words).map_err(one_line)?;
+    WalkArgs::from_arg_matches(&matches).map_err(one_line)
+}
+
+/// Runs `biped walk` with `args`; with `write` (or `--out` given) its output folder is
+/// replaced as a whole (on a failure: the parts done and a summary saying why).
+pub fn execute(args: &WalkArgs, write: bool) -> Result<Walk, String> {
     let methods: Vec<Method> = match args.method.as_str() {
         "all" => Method::ALL.to_vec(),
         m => vec![m.parse().map_err(|e| format!("--method: {e}"))?],
     };
-    let lola = lola::build(LolaType::Type2)?;
-    let params = walk_pattern_params(&lola, args.steps, args.step_length, args.step_time)?;
-    let pattern = WalkingPattern::generate(&params)?;
-    let out = OutputDir::create(&args.out, "--out")?;
+    let lola = lola::build(LolaType::Type2).map_err(|e| e.to_string())?;
+    let params = walk_pattern_params(&lola, args.steps, args.step_length, args.step_time)
+        .map_err(|e| e.to_string())?;
+    let pattern = WalkingPattern::generate(&params).map_err(|e| e.to_string())?;
+    let out = match write || args.out.is_some() {
+        true => Some(OutputDir::create(&args.target(), "--out").map_err(|e| e.to_string())?),
+        false => None,
+    };
+    let dir = out.as_ref().map(|o| o.path());
     let mut summary = Map::new();
-    let (runs, dynamic) = match walk_all(&args, &lola, &pattern, &methods, out.path(), &mut summary)
-    {
-        Ok(done) => done,
-        Err(e) => {
+    let mut tables = Vec::new();
+    let walked = walk_all(
+        args,
+        &lola,
+        &pattern,
+        &methods,
+        dir,
+        &mut summary,
+        &mut tables,
+    );
+    let ((runs, dynamic), out) = match (walked, out) {
+        (Ok(done), out) => (done, out),
+        (Err(e), out) => {
+            let reason = e.to_string();
+            let Some(out) = out else {
+                return Err(reason.into());
+            };
             let status = match interrupt::requested() {
                 true => Status::Interrupted,
                 false => Status::Failed,
             };
-            let reason = e.to_string();
             let note = out.abandon(status, &reason, Some(Value::Object(summary)));
             return Err(format!("{reason}{note}").into());
         }
@@ -94,16 +175,36 @@ pub fn run(args: WalkArgs) -> CliResult {
     let dynamic_summary = dynamic.as_ref().map(|(_, r)| &r.summary);
     let mut lines = report::violation_lines(&runs);
     lines.extend(dynamic_summary.and_then(dynamic_violation));
-    summary.insert("violations".into(), serde_json::to_value(&lines)?);
+    summary.insert("violations".into(), lines.clone().into());
     outdir::stamp(&mut summary, Status::Completed);
-    outdir::write_json(&out.path().join("summary.json"), &Value::Object(summary))?;
-    out.commit()?;
-    report::print(&args, &lola, &runs, dynamic.as_ref())?;
-    outln!("wrote {}", args.out.display())?;
-    if let Some(s) = dynamic_summary.filter(|s| !s.walked) {
-        return Err(verdict_error(s).into());
+    let summary = Value::Object(summary);
+    if let Some(out) = out {
+        outdir::write_json(&out.path().join("summary.json"), &summary)
+            .map_err(|e| e.to_string())?;
+        out.commit().map_err(|e| e.to_string())?;
     }
-    report::violations(&lines, args.allow_violations)
+    Ok(Walk {
+        lola,
+        runs,
+        dynamic,
+        summary,
+        lines,
+        tables,
+    })
+}
+
+impl WalkArgs {
+    /// Whether violations are accepted (`--allow-violations`).
+    pub fn allow_violations(&self) -> bool {
+        self.allow_violations
+    }
+
+    /// The output folder (`--out`, default `out/walk`).
+    fn target(&self) -> PathBuf {
+        self.out
+            .clone()
+            .unwrap_or_else(|| PathBuf::from("out/walk"))
+    }
 }
 
 /// Error of a walk stopped by SIGINT / SIGTERM between two of its parts.
@@ -124,8 +225,9 @@ fn walk_all(
     lola: &LolaModel,
     pattern: &WalkingPattern,
     methods: &[Method],
-    dir: &Path,
+    dir: Option<&Path>,
     summary: &mut Map<String, Value>,
+    tables: &mut Vec<(String, Recorder)>,
 ) -> Result<Walks, Box<dyn std::error::Error>> {
     let mut runs = Vec::new();
     for &m in methods {
@@ -140,13 +242,20 @@ fn walk_all(
             ..WalkParams::default()
         };
         let run = run_walk(lola, pattern, m, params)?;
-        write_csv(&run, &dir.join(format!("{m}.csv")))?;
-        write_trajectory(&run, &dir.join(format!("{m}_trajectory.csv")))?;
+        keep(tables, dir, format!("{m}"), tables::series_table(&run)?)?;
+        keep(
+            tables,
+            dir,
+            format!("{m}_trajectory"),
+            tables::trajectory_table(&run)?,
+        )?;
         summary.insert(m.name().to_string(), serde_json::to_value(&run.summary)?);
         runs.push(run);
     }
     report::progress("");
-    write_plots(&runs, dir)?;
+    if let Some(dir) = dir {
+        tables::write_plots(&runs, dir)?;
+    }
     if !args.dynamic {
         return Ok((runs, None));
     }
@@ -155,7 +264,12 @@ fn walk_all(
         [m] => *m,
         _ => Method::Minimization,
     };
-    let run = dynamic_walk(args, method, dir)?;
+    let run = dynamic_walk(args, method)?;
+    let table = tables::dynamic_table(&run)?;
+    if let Some(dir) = dir {
+        tables::dynamic_plots(&table, dir)?;
+    }
+    keep(tables, dir, "dynamic".into(), table)?;
     summary.insert("dynamic".into(), serde_json::to_value(run.summary)?);
     Ok((runs, Some((method, run))))
 }
@@ -183,11 +297,24 @@ fn verdict_error(s: &DynamicWalkSummary) -> String {
     )
 }
 
-/// Runs the dynamic walk, writes `dynamic.csv` and its plots.
+/// Writes `table` as `dir/STEM.csv` (if writing) and keeps it under `stem`.
+fn keep(
+    tables: &mut Vec<(String, Recorder)>,
+    dir: Option<&Path>,
+    stem: String,
+    table: Recorder,
+) -> Result<(), Box<dyn std::error::Error>> {
+    if let Some(dir) = dir {
+        table.write_csv(&dir.join(format!("{stem}.csv")))?;
+    }
+    tables.push((stem, table));
+    Ok(())
+}
+
+/// Runs the dynamic walk of `method`.
 fn dynamic_walk(
     args: &WalkArgs,
     method: Method,
-    dir: &Path,
 ) -> Result<DynamicWalkRun, Box<dyn std::error::Error>> {
     let p = DynamicWalkParams {
         steps: args.steps,
@@ -206,138 +333,5 @@ fn dynamic_walk(
     } else {
         p
     };
-    let run = run_dynamic_walk(&p)?;
-    write_dynamic(&run, dir)?;
-    Ok(run)
-}
-
-/// `dynamic.csv` and the plots of base x/z, trunk tilt, vertical foot forces and `tau_z`.
-fn write_dynamic(run: &DynamicWalkRun, out: &Path) -> Result<(), Box<dyn std::error::Error>> {
-    let s = &run.series;
-    let mut rec = Recorder::with_capacity(s.t.len());
-    for k in 0..s.t.len() {
-        rec.sample(s.t[k])?;
-        let [x, y, z] = s.base[k];
-        for (name, v) in [
-            ("base_x", x),
-            ("base_y", y),
-            ("base_z", z),
-            ("planned_base_x", s.planned_base_x[k]),
-            ("trunk_tilt", s.tilt[k]),
-            ("fz_left", s.foot_fz[k][0]),
-            ("fz_right", s.foot_fz[k][1]),
-            ("tau_z_left", s.tau_z[k][0]),
-            ("tau_z_right", s.tau_z[k][1]),
-            ("toe_fz_left", s.toe_fz[k][0]),
-            ("toe_fz_right", s.toe_fz[k][1]),
-            ("heel_lift_left", s.heel_lift[k][0]),
-            ("heel_lift_right", s.heel_lift[k][1]),
-            ("friction_usage_left", s.friction_usage[k][0]),
-            ("friction_usage_right", s.friction_usage[k][1]),
-            ("slip_speed_left", s.slip_speed[k][0]),
-            ("slip_speed_right", s.slip_speed[k][1]),
-            ("points_in_contact_left", s.points_in_contact[k][0] as f64),
-            ("points_in_contact_right", s.points_in_contact[k][1] as f64),
-            ("tracking_error", s.tracking_error[k]),
-        ] {
-            rec.set(name, v)?;
-        }
-    }
-    rec.write_csv(&out.join("dynamic.csv"))?;
-    let plots: [(&[&str], &str, &str, &str); 4] = [
-        (
-            &["base_x", "planned_base_x", "base_z"],
-            "base position [m]",
-            "dynamic_base.svg",
-            "base x (simulated, planned) and height",
-        ),
-        (
-            &["trunk_tilt"],
-            "tilt [rad]",
-            "dynamic_tilt.svg",
-            "trunk tilt",
-        ),
-        (
-            &["fz_left", "fz_right"],
-            "F_z [N]",
-            "dynamic_fz.svg",
-            "vertical foot forces",
-        ),
-        (
-            &["tau_z_left", "tau_z_right"],
-            "tau_z [N m]",
-            "dynamic_tau_z.svg",
-            "vertical torque on the feet (F/T sensors)",
-        ),
-    ];
-    for (names, unit, file, title) in plots {
-        rec.plot_svg(
-            &out.join(file),
-            &format!("dynamic walk: {title}"),
-            names,
-            unit,
-        )?;
-    }
-    Ok(())
-}
-
-/// Time series of one method as CSV.
-fn write_csv(run: &WalkRun, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
-    let s = &run.series;
-    let mut rec = Recorder::with_capacity(s.t.len());
-    for k in 0..s.t.len() {
-        rec.sample(s.t[k])?;
-        rec.set("L_z", s.lz[k])?;
-        rec.set("dL_z", s.dlz[k])?;
-        rec.set("tau_z", s.tau_z[k])?;
-        rec.set("min_distance", s.min_distance[k])?;
-        rec.set("friction_usage", s.friction_usage[k])?;
-        rec.set("zmp_x", s.zmp[k][0])?;
-        rec.set("zmp_y", s.zmp[k][1])?;
-        for (name, v) in RECORDED_JOINTS.iter().zip(s.joints[k]) {
-            rec.set(name, v)?;
-        }
-    }
-    rec.write_csv(path)?;
-    Ok(())
-}
-
-/// The full motion of one method (`METHOD_trajectory.csv`, see docs/walking.md).
-fn write_trajectory(run: &WalkRun, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
-    let tr = &run.trajectory;
-    let columns = tr.columns();
-    let mut rec = Recorder::with_capacity(tr.len());
-    for k in 0..tr.len() {
-        rec.sample(tr.t[k])?;
-        for (name, v) in columns.iter().zip(tr.row(k)) {
-            rec.set(name, v)?;
-        }
-    }
-    rec.write_csv(path)?;
-    Ok(())
-}
-
-/// `L_z` and `tau_z` of all methods over time, side by side (Fig. 7.1/7.4 style).
-fn write_plots(runs: &[WalkRun], out: &Path) -> Result<(), Box<dyn std::error::Error>> {
-    let Some(first) = runs.first() else {
-        return Ok(());
-    };
-    let mut rec = Recorder::with_capacity(first.series.t.len());
-    for k in 0..first.series.t.len() {
-        rec.sample(first.series.t[k])?;
-        for r in runs {
-            rec.set(&format!("L_z {}", r.method), r.series.lz[k])?;
-            rec.set(&format!("tau_z {}", r.method), r.series.tau_z[k])?;
-        }
-    }
-    for (sig, unit, file) in [
-        ("L_z", "L_z [N m s]", "lz.svg"),
-        ("tau_z", "tau_z [N m]", "tau_z.svg"),
-    ] {
-        let names: Vec<String> = runs.iter().map(|r| format!("{sig} {}", r.method)).collect();
-        let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-        let title = format!("{sig} during walking, arm methods compared");
-        rec.plot_svg(&out.join(file), &title, &refs, unit)?;
-    }
-    Ok(())
+    Ok(run_dynamic_walk(&p)?)
 }

@@ -70,6 +70,9 @@ pub enum SimError {
     /// Writing outputs failed.
     #[error("output: {0}")]
     Output(String),
+    /// A controller (e.g. a user's hook) failed; the text says why.
+    #[error("controller: {0}")]
+    Controller(String),
     /// The observer ended the run early (e.g. on SIGINT); the text says why.
     #[error("stopped: {0}")]
     Stopped(String),

@@ -1,13 +1,13 @@
 //! Files written by `biped simulate`: `signals.csv` (every recorded signal), SVG plots of the
 //! quantities one checks first and `summary.json`.
 
-use super::report::{final_base_height, summary_json};
 use super::setup::Info;
+use super::Outcome;
 use crate::cli::outdir::{self, OutputDir, Status};
 use biped_sim::glob::glob_match;
 use biped_sim::plant::Plant;
 use biped_sim::record::Recorder;
-use biped_sim::simulation::{Frame, Summary};
+use biped_sim::simulation::Frame;
 use biped_sim::SimError;
 use serde_json::json;
 use std::path::Path;
@@ -65,12 +65,17 @@ pub fn abandon(out: OutputDir, rec: &Recorder, info: &Info, t: f64, err: &SimErr
         "stopped_at": t,
         "files": files,
     });
-    let reason = match err {
-        SimError::Stopped(why) => format!("simulation interrupted after t = {t:.4} s: {why}"),
-        _ => format!("simulation failed after t = {t:.4} s: {err}"),
-    };
+    let reason = abandoned_line(t, err);
     let note = out.abandon(status, &reason, Some(base));
     format!("{reason}{kept}{note}")
+}
+
+/// Why a run stopped at `t` with `err`, in one line.
+pub fn abandoned_line(t: f64, err: &SimError) -> String {
+    match err {
+        SimError::Stopped(why) => format!("simulation interrupted after t = {t:.4} s: {why}"),
+        _ => format!("simulation failed after t = {t:.4} s: {err}"),
+    }
 }
 
 /// One line of a plot: legend label and recorder column.
@@ -220,14 +225,8 @@ pub fn chosen_plots(rec: &Recorder, options: &[String]) -> OutResult<Vec<Plot>> 
 
 /// Writes the CSV, the plots (the standard ones, then the `chosen` ones) and `summary.json`
 /// into `dir`; returns the file names.
-pub fn write_all(
-    rec: &Recorder,
-    plant: &Plant,
-    summary: &Summary,
-    info: &Info,
-    chosen: &[Plot],
-    dir: &Path,
-) -> OutResult<Vec<String>> {
+pub fn write_all(done: &Outcome, chosen: &[Plot], dir: &Path) -> OutResult<Vec<String>> {
+    let (rec, plant, info) = (&done.rec, done.sim.plant(), &done.info);
     let mut files = vec!["signals.csv".to_string()];
     rec.write_csv(&dir.join(&files[0]))?;
     for p in plots(rec, plant).iter().chain(chosen) {
@@ -239,7 +238,7 @@ pub fn write_all(
         files.push(p.file.clone());
     }
     files.push("summary.json".to_string());
-    let mut json = summary_json(summary, final_base_height(rec, plant), plant, info, &files)?;
+    let mut json = done.summary_json(&files).map_err(|e| e.to_string())?;
     if let Some(map) = json.as_object_mut() {
         outdir::stamp(map, Status::Completed);
     }

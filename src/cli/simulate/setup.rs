@@ -6,7 +6,7 @@ use super::parse::parse_pose;
 use super::recording::Recording;
 use super::SimulateArgs;
 use crate::cli::range::simulate::{BANDWIDTH, DURATION, EVERY, STEP, SWAY, TOLERANCES};
-use biped_sim::controller::JointPd;
+use biped_sim::controller::{Hook, Hooked, JointPd};
 use biped_sim::ode::{Method, Settings};
 use biped_sim::plant::Plant;
 use biped_sim::scenario::{build, Scenario, ScenarioKind};
@@ -128,14 +128,17 @@ impl Job {
         rows.min(MAX_RESERVED_ROWS)
     }
 
-    /// Runs the scenario with `observer` called once per control period and at the end.
+    /// Runs the scenario, its joint PD followed by `hook` if given, with `observer` called
+    /// once per control period and at the end.
     pub fn run(
         self,
+        hook: Option<Hook>,
         observer: &mut dyn FnMut(&Frame) -> Result<(), SimError>,
-    ) -> Result<(Summary, Simulation<JointPd>), SimError> {
+    ) -> Result<(Summary, Simulation<Hooked<JointPd>>), SimError> {
         let method = self.info.method;
+        let wrap = |pd| Ok(Hooked::new(pd, hook));
         self.scenario
-            .run_with(self.plant, method, self.settings, observer)
+            .run_wrapped(self.plant, wrap, method, self.settings, observer)
     }
 }
 

@@ -4,10 +4,12 @@
 //! inner controller at an integer multiple of the outer rate ([`Cascade`]).
 
 mod cascade;
+mod hooked;
 mod pd;
 mod stance;
 
 pub use cascade::{Cascade, CurrentPi, InnerController};
+pub use hooked::{Hook, Hooked};
 pub use pd::{JointPd, Trajectory};
 pub use stance::{StanceAnkle, StanceDamping};
 

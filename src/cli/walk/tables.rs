@@ -1,0 +1,141 @@
+//! The tables `biped walk` writes as CSV (and returns to Python): per method its series and
+//! full trajectory, the dynamic walk's signals, and the plots drawn from them.
+
+use biped_control::walk::run::RECORDED_JOINTS;
+use biped_control::walk::{DynamicWalkRun, WalkRun};
+use biped_sim::record::RecordError;
+use biped_sim::Recorder;
+use std::path::Path;
+
+/// The table of `dynamic.csv`: the dynamic walk's base, tilt and per-foot signals.
+pub fn dynamic_table(run: &DynamicWalkRun) -> Result<Recorder, RecordError> {
+    let s = &run.series;
+    let mut rec = Recorder::with_capacity(s.t.len());
+    for k in 0..s.t.len() {
+        rec.sample(s.t[k])?;
+        let [x, y, z] = s.base[k];
+        for (name, v) in [
+            ("base_x", x),
+            ("base_y", y),
+            ("base_z", z),
+            ("planned_base_x", s.planned_base_x[k]),
+            ("trunk_tilt", s.tilt[k]),
+            ("fz_left", s.foot_fz[k][0]),
+            ("fz_right", s.foot_fz[k][1]),
+            ("tau_z_left", s.tau_z[k][0]),
+            ("tau_z_right", s.tau_z[k][1]),
+            ("toe_fz_left", s.toe_fz[k][0]),
+            ("toe_fz_right", s.toe_fz[k][1]),
+            ("heel_lift_left", s.heel_lift[k][0]),
+            ("heel_lift_right", s.heel_lift[k][1]),
+            ("friction_usage_left", s.friction_usage[k][0]),
+            ("friction_usage_right", s.friction_usage[k][1]),
+            ("slip_speed_left", s.slip_speed[k][0]),
+            ("slip_speed_right", s.slip_speed[k][1]),
+            ("points_in_contact_left", s.points_in_contact[k][0] as f64),
+            ("points_in_contact_right", s.points_in_contact[k][1] as f64),
+            ("tracking_error", s.tracking_error[k]),
+        ] {
+            rec.set(name, v)?;
+        }
+    }
+    Ok(rec)
+}
+
+/// The plots of the dynamic walk's table: base x/z, trunk tilt, vertical foot forces, `tau_z`.
+pub fn dynamic_plots(rec: &Recorder, out: &Path) -> Result<(), RecordError> {
+    let plots: [(&[&str], &str, &str, &str); 4] = [
+        (
+            &["base_x", "planned_base_x", "base_z"],
+            "base position [m]",
+            "dynamic_base.svg",
+            "base x (simulated, planned) and height",
+        ),
+        (
+            &["trunk_tilt"],
+            "tilt [rad]",
+            "dynamic_tilt.svg",
+            "trunk tilt",
+        ),
+        (
+            &["fz_left", "fz_right"],
+            "F_z [N]",
+            "dynamic_fz.svg",
+            "vertical foot forces",
+        ),
+        (
+            &["tau_z_left", "tau_z_right"],
+            "tau_z [N m]",
+            "dynamic_tau_z.svg",
+            "vertical torque on the feet (F/T sensors)",
+        ),
+    ];
+    for (names, unit, file, title) in plots {
+        rec.plot_svg(
+            &out.join(file),
+            &format!("dynamic walk: {title}"),
+            names,
+            unit,
+        )?;
+    }
+    Ok(())
+}
+
+/// The table of `METHOD.csv`: one method's momentum, torque, distance and joint series.
+pub fn series_table(run: &WalkRun) -> Result<Recorder, RecordError> {
+    let s = &run.series;
+    let mut rec = Recorder::with_capacity(s.t.len());
+    for k in 0..s.t.len() {
+        rec.sample(s.t[k])?;
+        rec.set("L_z", s.lz[k])?;
+        rec.set("dL_z", s.dlz[k])?;
+        rec.set("tau_z", s.tau_z[k])?;
+        rec.set("min_distance", s.min_distance[k])?;
+        rec.set("friction_usage", s.friction_usage[k])?;
+        rec.set("zmp_x", s.zmp[k][0])?;
+        rec.set("zmp_y", s.zmp[k][1])?;
+        for (name, v) in RECORDED_JOINTS.iter().zip(s.joints[k]) {
+            rec.set(name, v)?;
+        }
+    }
+    Ok(rec)
+}
+
+/// The table of `METHOD_trajectory.csv`: one method's full motion (see docs/walking.md).
+pub fn trajectory_table(run: &WalkRun) -> Result<Recorder, RecordError> {
+    let tr = &run.trajectory;
+    let columns = tr.columns();
+    let mut rec = Recorder::with_capacity(tr.len());
+    for k in 0..tr.len() {
+        rec.sample(tr.t[k])?;
+        for (name, v) in columns.iter().zip(tr.row(k)) {
+            rec.set(name, v)?;
+        }
+    }
+    Ok(rec)
+}
+
+/// `L_z` and `tau_z` of all methods over time, side by side (Fig. 7.1/7.4 style).
+pub fn write_plots(runs: &[WalkRun], out: &Path) -> Result<(), RecordError> {
+    let Some(first) = runs.first() else {
+        return Ok(());
+    };
+    let mut rec = Recorder::with_capacity(first.series.t.len());
+    for k in 0..first.series.t.len() {
+        rec.sample(first.series.t[k])?;
+        for r in runs {
+            rec.set(&format!("L_z {}", r.method), r.series.lz[k])?;
+            rec.set(&format!("tau_z {}", r.method), r.series.tau_z[k])?;
+        }
+    }
+    for (sig, unit, file) in [
+        ("L_z", "L_z [N m s]", "lz.svg"),
+        ("tau_z", "tau_z [N m]", "tau_z.svg"),
+    ] {
+        let names: Vec<String> = runs.iter().map(|r| format!("{sig} {}", r.method)).collect();
+        let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+        let title = format!("{sig} during walking, arm methods compared");
+        rec.plot_svg(&out.join(file), &title, &refs, unit)?;
+    }
+    Ok(())
+}
