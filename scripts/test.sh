@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Everything the project's tests need, from a clean clone with only the Rust toolchain and
 # python3: the Rust test suite (release profile), then the Python package `biped` built into
-# a venv under the workspace's target dir and tested with pytest against the CLI just built.
+# a venv under the workspace's target dir and tested with pytest against the CLI just built,
+# and the Ray sweeps on a two-node cluster in a network namespace with loopback only.
 # Usage: scripts/test.sh   (CARGO_TARGET_DIR is honoured; the venv goes under it)
 set -euo pipefail
 start=$(date +%s)
@@ -17,7 +18,7 @@ venv=$CARGO_TARGET_DIR/python-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
 export PATH="$venv/bin:$PATH"  # the maturin build backend runs the venv's `maturin`
 "$venv/bin/pip" install -q --upgrade pip
-"$venv/bin/pip" install -q maturin numpy pytest
+"$venv/bin/pip" install -q maturin numpy pytest ray
 # maturin runs cargo with the same CARGO_TARGET_DIR and release profile. Cargo resolves
 # features for the selected package only, so the dependencies whose features differ from the
 # workspace test build (nalgebra, serde, ...) and pyo3 are compiled once more on the first run
@@ -25,6 +26,18 @@ export PATH="$venv/bin:$PATH"  # the maturin build backend runs the venv's `matu
 # dependency, numpy, is installed above).
 "$venv/bin/pip" install -q --no-build-isolation --force-reinstall --no-deps ./python
 BIPED_REQUIRE_CLI=1 "$venv/bin/python" -m pytest -q python/tests
+
+# Ray binds to the machine's address: its cluster test runs where loopback is the only
+# network (a namespace of its own; as root, or mapped to root in a user namespace).
+if unshare --net true 2>/dev/null; then
+  isolate=(unshare --net)
+elif unshare --map-root-user --net true 2>/dev/null; then
+  isolate=(unshare --map-root-user --net)
+else
+  echo "scripts/test.sh: cannot make a network namespace (unshare --net) for the Ray cluster test" >&2
+  exit 1
+fi
+"${isolate[@]}" bash -c 'ip link set lo up && BIPED_REQUIRE_RAY=1 RAY_USAGE_STATS_ENABLED=0 "$0" -m pytest -q python/tests/test_ray.py' "$venv/bin/python"
 
 end=$(date +%s)
 echo "scripts/test.sh: all passed in $((end - start)) s (cargo test $((rust_done - start)) s, Python $((end - rust_done)) s)"

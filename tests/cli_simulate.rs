@@ -126,6 +126,16 @@ fn short_stand_writes_csv_plots_and_a_consistent_summary() {
     assert!((base[200] - num(&s, "final_base_height")).abs() < 1e-15);
     let com = column(&table, "com.z");
     assert!((com[200] - num(&s, "final_com_height")).abs() < 1e-12);
+    // The final state: time, and q / v equal to the CSV's last row.
+    let fin = &s["final"];
+    assert!((num(fin, "t") - 0.2).abs() < 1e-12);
+    let (q, v) = (fin["q"].as_array().unwrap(), fin["v"].as_array().unwrap());
+    assert_eq!(q[2].as_f64(), Some(base[200]));
+    let shank = table.0.iter().position(|c| c == "v[l_shank]").unwrap();
+    let v_names: Vec<&String> = table.0.iter().filter(|c| c.starts_with("v[")).collect();
+    assert_eq!(v.len(), v_names.len());
+    let k = v_names.iter().position(|c| *c == "v[l_shank]").unwrap();
+    assert_eq!(v[k].as_f64(), Some(table.1[200][shank]));
     // Plots: every listed SVG exists and carries its legend labels.
     let files: Vec<&str> = s["files"]
         .as_array()

@@ -40,6 +40,21 @@ def cli():
     return run
 
 
+@pytest.fixture(scope="session")
+def cli_run():
+    """Runs the CLI with arguments; returns the completed process (not checked)."""
+    path = _cli_path()
+    if not path.exists():
+        if os.environ.get("BIPED_REQUIRE_CLI"):
+            pytest.fail(f"{path} not built (cargo build --release)")
+        pytest.skip(f"{path} not built (cargo build --release)")
+
+    def run(args):
+        return subprocess.run([str(path), *map(str, args)], capture_output=True, text=True)
+
+    return run
+
+
 # (model factory, CLI model options) of every model the tests cover.
 MODELS = {
     "lola2": (lambda: biped.Model.lola("type2"), ["--lola", "type2"]),

@@ -25,3 +25,7 @@ def test_readme_python_blocks_run_as_written():
     assert scope["QDD"].shape == (10_000, scope["model"].nv)
     assert np.array_equal(scope["QDD"][0], scope["qdd"])
     assert abs(scope["d"].distance - 1.5) < 1e-12
+    assert scope["summary"]["passed"] and scope["signals"]["t"][-1] == 0.5
+    assert scope["limp"]["final_com_height"] < scope["summary"]["final_com_height"] - 0.05
+    assert [len(r) for r in scope["sweep"]] == [2, 2, 2]
+    assert "L_z" in scope["tables"]["minimization"] and scope["walked"]["violations"] == []

@@ -52,8 +52,8 @@ pub struct WalkArgs {
     /// them; the planned motion stays inside the ranges).
     #[arg(long, requires = "dynamic")]
     no_end_stops: bool,
-    /// Coulomb coefficient of the ground that the friction verdict checks the planned ground
-    /// wrench against (0.05 to 3).
+    /// Coulomb coefficient of the ground (0.05 to 3): the friction verdict checks the planned
+    /// ground wrench against it, and with --dynamic the simulated soles slide on it.
     #[arg(long, value_name = "MU", default_value_t = 0.8, allow_hyphen_values = true,
           value_parser = |s: &str| range::walk::FRICTION.parse(s))]
     friction: f64,
@@ -322,6 +322,7 @@ fn dynamic_walk(
         step_time: args.step_time,
         method,
         end_stops: !args.no_end_stops,
+        friction: args.friction,
         ..DynamicWalkParams::default()
     };
     let p = if args.open_loop {

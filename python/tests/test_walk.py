@@ -1,0 +1,45 @@
+"""`biped.walk` against `biped walk` (summary.json and the CSV tables), and its errors."""
+
+import csv
+import json
+
+import numpy as np
+import pytest
+
+import biped
+
+VOLATILE = {"wall_time", "realtime_factor", "status", "written_at", "ik_time_per_cycle_us"}
+
+
+def _stable(value):
+    if isinstance(value, dict):
+        return {k: _stable(v) for k, v in value.items() if k not in VOLATILE and not k.startswith("ik_us")}
+    if isinstance(value, list):
+        return [_stable(v) for v in value]
+    return value
+
+
+def test_walk_equals_cli(cli_run, tmp_path):
+    summary, tables = biped.walk(steps=2, method="none")
+    done = cli_run(["walk", "--steps", "2", "--method", "none", "--out", tmp_path])
+    assert done.returncode == 0, done.stderr
+    reference = json.loads((tmp_path / "summary.json").read_text())
+    assert _stable(summary) == _stable(reference)
+    assert set(tables) == {"none", "none_trajectory"}
+    for stem, table in tables.items():
+        with open(tmp_path / f"{stem}.csv", newline="") as f:
+            rows = list(csv.reader(f))
+        header, data = rows[0], np.array(rows[1:], dtype=float)
+        assert len(header) == len(table)
+        for k, name in enumerate(header):
+            key = "t" if name == "time" else name
+            np.testing.assert_allclose(table[key], data[:, k], rtol=1e-12, atol=1e-12, err_msg=f"{stem}: {name}")
+
+
+def test_walk_errors(cli_run, tmp_path):
+    with pytest.raises(biped.BipedError, match="--step-length"):
+        biped.walk(step_length=3.0)
+    with pytest.raises(biped.BipedError, match="--method"):
+        biped.walk(method="moonwalk")
+    with pytest.raises(biped.BipedError, match="unknown option `robot_name`"):
+        biped.walk(robot_name="x")
