@@ -8,7 +8,7 @@
 use biped::cli;
 use clap::error::ErrorKind;
 use clap::{Parser, Subcommand};
-use cli::out::{diagnostic, is_broken_pipe};
+use cli::out::{clap_error_line as one_line, diagnostic, is_broken_pipe};
 use std::process::ExitCode;
 
 /// Efficient algorithms for biped robots (Schwienbacher 2014), in Rust.
@@ -77,31 +77,6 @@ fn usage_error(e: &clap::Error) -> ExitCode {
             ExitCode::from(2)
         }
     }
-}
-
-/// A clap error in one line: the range checks' own message for a rejected value (it names
-/// the option and the valid range), else clap's first paragraph and tips, without the usage.
-fn one_line(e: &clap::Error) -> String {
-    if e.kind() == ErrorKind::ValueValidation {
-        match std::error::Error::source(e).map(|s| s.to_string()) {
-            Some(own) if own.starts_with("--") => return format!("error: {own}"),
-            _ => {} // Not a range check: clap's line names the option.
-        }
-    }
-    let text = e.render().to_string();
-    let mut parts = Vec::new();
-    for (k, para) in text.split("\n\n").enumerate() {
-        let joined: Vec<&str> = para
-            .lines()
-            .map(str::trim)
-            .filter(|l| !l.is_empty())
-            .collect();
-        let joined = joined.join(" ");
-        if k == 0 || joined.starts_with("tip:") {
-            parts.push(joined);
-        }
-    }
-    parts.join("; ")
 }
 
 /// The command tree with its argument parsing, as `main` uses it (for the tests).

@@ -13,6 +13,7 @@ pub mod range;
 pub mod simulate;
 pub mod ssv;
 pub mod walk;
+pub mod words;
 
 use clap::Subcommand;
 use std::process::ExitCode;

@@ -1,6 +1,6 @@
-//! Terminal output of every sub-command: results go to stdout through [`outln!`], which
+//! Terminal output of every sub-command: results go to stdout through `outln!`, which
 //! returns the write error instead of panicking like `println!`; diagnostics go to stderr
-//! through [`errln!`], best effort (a closed stderr is no reason to fail a run). A reader that
+//! through `errln!`, best effort (a closed stderr is no reason to fail a run). A reader that
 //! closes stdout early (`biped ... | head -1`) ends the run as a quiet success: `main` checks
 //! the returned error with [`is_broken_pipe`].
 
@@ -70,6 +70,31 @@ pub fn is_broken_pipe(err: &(dyn Error + 'static)) -> bool {
         next = e.source();
     }
     false
+}
+
+/// A clap error in one line: the range checks' own message for a rejected value (it names
+/// the option and the valid range), else clap's first paragraph and tips, without the usage.
+pub fn clap_error_line(e: &clap::Error) -> String {
+    if e.kind() == clap::error::ErrorKind::ValueValidation {
+        match std::error::Error::source(e).map(|s| s.to_string()) {
+            Some(own) if own.starts_with("--") => return format!("error: {own}"),
+            _ => {} // Not a range check: clap's line names the option.
+        }
+    }
+    let text = e.render().to_string();
+    let mut parts = Vec::new();
+    for (k, para) in text.split("\n\n").enumerate() {
+        let joined: Vec<&str> = para
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty())
+            .collect();
+        let joined = joined.join(" ");
+        if k == 0 || joined.starts_with("tip:") {
+            parts.push(joined);
+        }
+    }
+    parts.join("; ")
 }
 
 #[cfg(test)]

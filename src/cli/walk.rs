@@ -3,22 +3,16 @@
 //! With `--dynamic` the walk of one method (`--method`, default minimisation) is then tracked
 //! in the contact simulation: `dynamic.csv`, plots and a `"dynamic"` summary entry.
 
-use super::outdir::{self, OutputDir, Status};
-use super::{interrupt, range, CliResult};
+use super::{interrupt, outdir, range, CliResult};
 use crate::cli::out::outln;
-use biped_control::pattern::WalkingPattern;
-use biped_control::walk::{
-    run_dynamic_walk, run_walk, walk_pattern_params, DynamicWalkParams, DynamicWalkRun,
-    DynamicWalkSummary, Method, WalkParams, WalkRun,
-};
-use biped_robots::lola::{self, LolaModel, LolaType};
-use biped_sim::Recorder;
-use clap::{Args, FromArgMatches};
-use serde_json::{Map, Value};
-use std::path::{Path, PathBuf};
+use clap::Args;
+use std::path::PathBuf;
 
+mod execute;
 mod report;
 pub mod tables;
+
+pub use execute::{execute, parse_args, Walk};
 
 /// Arguments of `biped walk`; the numbers are checked against [`range::walk`] while parsing.
 #[derive(Args)]
@@ -79,120 +73,6 @@ pub fn run(args: WalkArgs) -> CliResult {
     report::violations(&walk.lines, args.allow_violations)
 }
 
-/// A finished `biped walk`: the model, every method's walk, the dynamic walk if asked for, the
-/// summary of `summary.json`, the violation lines and the tables of the CSV files.
-pub struct Walk {
-    /// The walked model.
-    pub lola: LolaModel,
-    /// The kinematic walk of each method.
-    pub runs: Vec<WalkRun>,
-    /// The dynamic walk and the method it tracked.
-    pub dynamic: Option<(Method, DynamicWalkRun)>,
-    /// `summary.json`'s content.
-    pub summary: Value,
-    /// One line per violated verdict.
-    pub lines: Vec<String>,
-    /// The tables by file stem (`none`, `none_trajectory`, ..., `dynamic`).
-    pub tables: Vec<(String, Recorder)>,
-}
-
-impl Walk {
-    /// The one-line error of a dynamic walk that fell or did not advance.
-    pub fn failure(&self) -> Option<String> {
-        let (_, run) = self.dynamic.as_ref()?;
-        (!run.summary.walked).then(|| verdict_error(&run.summary))
-    }
-
-    /// The first violation as the error `biped walk` exits with (none with `allow`).
-    pub fn violation(&self, allow: bool) -> Option<String> {
-        let first = self.lines.first().filter(|_| !allow)?;
-        Some(format!(
-            "{first} (--allow-violations to accept such a walk)"
-        ))
-    }
-}
-
-/// Parses the options of `biped walk` given as command-line words (without the program and
-/// sub-command names).
-pub fn parse_args<I, S>(words: I) -> Result<WalkArgs, String>
-where
-    I: IntoIterator<Item = S>,
-    S: Into<String>,
-{
-    let cmd = WalkArgs::augment_args(clap::Command::new("walk").no_binary_name(true));
-    let words: Vec<String> = words.into_iter().map(Into::into).collect();
-    let one_line = |e: clap::Error| {
-        let text = e.to_string();
-        let line = text.lines().find(|l| !l.trim().is_empty()).unwrap_or(&text);
-        line.trim_start_matches("error: ").to_string()
-    };
-    let matches = cmd.try_get_matches_from(words).map_err(one_line)?;
-    WalkArgs::from_arg_matches(&matches).map_err(one_line)
-}
-
-/// Runs `biped walk` with `args`; with `write` (or `--out` given) its output folder is
-/// replaced as a whole (on a failure: the parts done and a summary saying why).
-pub fn execute(args: &WalkArgs, write: bool) -> Result<Walk, String> {
-    let methods: Vec<Method> = match args.method.as_str() {
-        "all" => Method::ALL.to_vec(),
-        m => vec![m.parse().map_err(|e| format!("--method: {e}"))?],
-    };
-    let lola = lola::build(LolaType::Type2).map_err(|e| e.to_string())?;
-    let params = walk_pattern_params(&lola, args.steps, args.step_length, args.step_time)
-        .map_err(|e| e.to_string())?;
-    let pattern = WalkingPattern::generate(&params).map_err(|e| e.to_string())?;
-    let out = match write || args.out.is_some() {
-        true => Some(OutputDir::create(&args.target(), "--out").map_err(|e| e.to_string())?),
-        false => None,
-    };
-    let dir = out.as_ref().map(|o| o.path());
-    let mut summary = Map::new();
-    let mut tables = Vec::new();
-    let walked = walk_all(
-        args,
-        &lola,
-        &pattern,
-        &methods,
-        dir,
-        &mut summary,
-        &mut tables,
-    );
-    let ((runs, dynamic), out) = match (walked, out) {
-        (Ok(done), out) => (done, out),
-        (Err(e), out) => {
-            let reason = e.to_string();
-            let Some(out) = out else {
-                return Err(reason.into());
-            };
-            let status = match interrupt::requested() {
-                true => Status::Interrupted,
-                false => Status::Failed,
-            };
-            let note = out.abandon(status, &reason, Some(Value::Object(summary)));
-            return Err(format!("{reason}{note}").into());
-        }
-    };
-    let dynamic_summary = dynamic.as_ref().map(|(_, r)| &r.summary);
-    let mut lines = report::violation_lines(&runs);
-    lines.extend(dynamic_summary.and_then(dynamic_violation));
-    summary.insert("violations".into(), lines.clone().into());
-    outdir::stamp(&mut summary, Status::Completed);
-    let summary = Value::Object(summary);
-    if let Some(out) = out {
-        outdir::write_json(&out.path().join("summary.json"), &summary)
-            .map_err(|e| e.to_string())?;
-        out.commit().map_err(|e| e.to_string())?;
-    }
-    Ok(Walk {
-        lola,
-        runs,
-        dynamic,
-        summary,
-        lines,
-        tables,
-    })
-}
-
 impl WalkArgs {
     /// Whether violations are accepted (`--allow-violations`).
     pub fn allow_violations(&self) -> bool {
@@ -205,134 +85,4 @@ impl WalkArgs {
             .clone()
             .unwrap_or_else(|| PathBuf::from("out/walk"))
     }
-}
-
-/// Error of a walk stopped by SIGINT / SIGTERM between two of its parts.
-fn check_interrupt() -> Result<(), Box<dyn std::error::Error>> {
-    match interrupt::requested() {
-        true => Err(outdir::interrupted_reason().into()),
-        false => Ok(()),
-    }
-}
-
-/// What [`walk_all`] returns: the kinematic walks and the dynamic one, if asked for.
-type Walks = (Vec<WalkRun>, Option<(Method, DynamicWalkRun)>);
-
-/// Walks every method (then the dynamic walk if asked), writing into `dir` and adding each
-/// part's summary to `summary` as it finishes.
-fn walk_all(
-    args: &WalkArgs,
-    lola: &LolaModel,
-    pattern: &WalkingPattern,
-    methods: &[Method],
-    dir: Option<&Path>,
-    summary: &mut Map<String, Value>,
-    tables: &mut Vec<(String, Recorder)>,
-) -> Result<Walks, Box<dyn std::error::Error>> {
-    let mut runs = Vec::new();
-    for &m in methods {
-        check_interrupt()?;
-        report::progress(&format!(
-            "walking: {m} ({} of {})",
-            runs.len() + 1,
-            methods.len()
-        ));
-        let params = WalkParams {
-            friction: args.friction,
-            ..WalkParams::default()
-        };
-        let run = run_walk(lola, pattern, m, params)?;
-        keep(tables, dir, format!("{m}"), tables::series_table(&run)?)?;
-        keep(
-            tables,
-            dir,
-            format!("{m}_trajectory"),
-            tables::trajectory_table(&run)?,
-        )?;
-        summary.insert(m.name().to_string(), serde_json::to_value(&run.summary)?);
-        runs.push(run);
-    }
-    report::progress("");
-    if let Some(dir) = dir {
-        tables::write_plots(&runs, dir)?;
-    }
-    if !args.dynamic {
-        return Ok((runs, None));
-    }
-    check_interrupt()?;
-    let method = match methods {
-        [m] => *m,
-        _ => Method::Minimization,
-    };
-    let run = dynamic_walk(args, method)?;
-    let table = tables::dynamic_table(&run)?;
-    if let Some(dir) = dir {
-        tables::dynamic_plots(&table, dir)?;
-    }
-    keep(tables, dir, "dynamic".into(), table)?;
-    summary.insert("dynamic".into(), serde_json::to_value(run.summary)?);
-    Ok((runs, Some((method, run))))
-}
-
-/// The dynamic walk's friction violation, if a foot slipped.
-fn dynamic_violation(s: &DynamicWalkSummary) -> Option<String> {
-    s.slip_at.map(|t| {
-        format!(
-            "dynamic walk: friction: a foot slid {:.1} mm within one contact by t = {t:.3} s",
-            1e3 * s.max_slip_distance
-        )
-    })
-}
-
-/// One-line error of a failed dynamic walk.
-fn verdict_error(s: &DynamicWalkSummary) -> String {
-    let what = match (s.fell_at, s.diverged) {
-        (Some(t), true) => format!("the simulation diverged at t = {t:.3} s (a fall)"),
-        (Some(t), false) => format!("the robot fell at t = {t:.3} s"),
-        (None, _) => "the robot did not advance enough".to_string(),
-    };
-    format!(
-        "--dynamic: {what}: {:.2} m of {:.2} m planned, max trunk tilt {:.3} rad",
-        s.distance, s.planned_distance, s.max_tilt
-    )
-}
-
-/// Writes `table` as `dir/STEM.csv` (if writing) and keeps it under `stem`.
-fn keep(
-    tables: &mut Vec<(String, Recorder)>,
-    dir: Option<&Path>,
-    stem: String,
-    table: Recorder,
-) -> Result<(), Box<dyn std::error::Error>> {
-    if let Some(dir) = dir {
-        table.write_csv(&dir.join(format!("{stem}.csv")))?;
-    }
-    tables.push((stem, table));
-    Ok(())
-}
-
-/// Runs the dynamic walk of `method`.
-fn dynamic_walk(
-    args: &WalkArgs,
-    method: Method,
-) -> Result<DynamicWalkRun, Box<dyn std::error::Error>> {
-    let p = DynamicWalkParams {
-        steps: args.steps,
-        step_length: args.step_length,
-        step_time: args.step_time,
-        method,
-        end_stops: !args.no_end_stops,
-        friction: args.friction,
-        ..DynamicWalkParams::default()
-    };
-    let p = if args.open_loop {
-        DynamicWalkParams {
-            zmp_iterations: 0,
-            stabiliser: None,
-            ..p
-        }
-    } else {
-        p
-    };
-    Ok(run_dynamic_walk(&p)?)
 }

@@ -25,9 +25,12 @@ fn stand_with(hook: Hook) -> Result<Vec<Vec<f64>>, SimError> {
     Ok(held)
 }
 
+/// The time and the PD's commands of each call of the hook.
+type Calls = Vec<(f64, Vec<f64>)>;
+
 #[test]
 fn the_hook_sees_the_pd_commands_and_its_commands_are_held() {
-    let seen: Arc<Mutex<Vec<(f64, Vec<f64>)>>> = Arc::default();
+    let seen: Arc<Mutex<Calls>> = Arc::default();
     let log = seen.clone();
     let hook: Hook = Box::new(move |t, _sensors, commands| {
         log.lock().unwrap().push((t, commands.values.clone()));

@@ -22,7 +22,7 @@ fn run(words: &[String], make: Option<MakeHook<'_>>, stash: &Stash) -> Result<Ru
         let mut cycles = 0u32;
         let mut stop = |_t: f64, _duration: f64| -> Result<(), SimError> {
             cycles += 1;
-            if cycles % SIGNAL_CHECK_EVERY != 0 {
+            if !cycles.is_multiple_of(SIGNAL_CHECK_EVERY) {
                 return Ok(());
             }
             match Python::attach(|py| py.check_signals()) {

@@ -10,7 +10,6 @@ use biped_sim::controller::{Hook, Hooked, JointPd};
 use biped_sim::record::Recorder;
 use biped_sim::simulation::{Frame, Signals, Simulation, Summary};
 use biped_sim::SimError;
-use clap::{Args, Command, FromArgMatches};
 use serde_json::{json, Value};
 
 /// Error of preparing a run: one line naming the option.
@@ -23,18 +22,7 @@ where
     I: IntoIterator<Item = S>,
     S: Into<String>,
 {
-    let cmd = SimulateArgs::augment_args(Command::new("simulate").no_binary_name(true));
-    let words: Vec<String> = words.into_iter().map(Into::into).collect();
-    let matches = cmd
-        .try_get_matches_from(words)
-        .map_err(|e| first_line(&e.to_string()))?;
-    SimulateArgs::from_arg_matches(&matches).map_err(|e| first_line(&e.to_string()))
-}
-
-/// The first non-empty line of clap's message, without its `error: ` prefix.
-fn first_line(text: &str) -> String {
-    let line = text.lines().find(|l| !l.trim().is_empty()).unwrap_or(text);
-    line.trim_start_matches("error: ").to_string()
+    crate::cli::words::parse("simulate", words)
 }
 
 /// A validated run: plant, scenario and a recorder with every column registered.
