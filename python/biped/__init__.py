@@ -12,6 +12,6 @@ simulations as Ray tasks. Invalid input raises
 
 from ._native import BipedError, Model
 from . import ssv
-from .run import simulate, simulate_batch, walk
+from .run import simulate, simulate_batch, walk, walk_batch
 
-__all__ = ["BipedError", "Model", "simulate", "simulate_batch", "ssv", "walk"]
+__all__ = ["BipedError", "Model", "simulate", "simulate_batch", "ssv", "walk", "walk_batch"]

@@ -177,5 +177,10 @@ def simulate_batch(
 def walk(words: List[str]) -> Tuple[dict, Dict[str, Dict[str, Array]]]:
     """``biped walk`` with command-line ``words``: ``(summary, tables by file stem)``."""
 
+def walk_batch(
+    batch: List[List[str]], threads: Optional[int] = None
+) -> List[Union[Tuple[dict, Dict[str, Dict[str, Array]]], BipedError]]:
+    """Every walk of ``batch`` in parallel; results in input order, a failed walk's error in its slot."""
+
 def option_spec(command: str) -> Dict[str, Tuple[bool, bool]]:
     """Options of ``biped <command>``: ``{keyword: (takes_value, repeatable)}``."""

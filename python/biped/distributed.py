@@ -3,7 +3,8 @@
 Connect first with ``ray.init(...)`` (``ray.init(address="HOST:PORT")`` for a cluster started
 with ``ray start --head`` and joined by ``ray start --address HOST:PORT`` on every other
 machine, each with this package installed); then ``sweep(list_of_option_dicts)`` runs them as
-Ray tasks and returns what ``biped.simulate_batch`` returns on one machine: the results in
+Ray tasks and returns what ``biped.simulate_batch`` (or, with ``command="walk"``,
+``biped.walk_batch``) returns on one machine: the results in
 input order, each ``(summary, signals)`` or the ``BipedError`` of a run that failed.
 
 Runs are grouped into chunks, one Ray task each, sized from a first pilot run so that a task
@@ -19,7 +20,7 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence, Union
 
 from . import _native
 from ._native import BipedError
-from ._options import words
+from .run import _batch
 
 _REMOTE = None
 
@@ -39,9 +40,10 @@ def _chunk_task(ray):
     global _REMOTE
     if _REMOTE is None:
 
-        def run_chunk(batch: List[List[str]], keep_signals: bool):
+        def run_chunk(command: str, batch: List[List[str]], keep_signals: bool):
             start = time.perf_counter()
-            results = _native.simulate_batch(batch, 1)
+            run_batch = _native.walk_batch if command == "walk" else _native.simulate_batch
+            results = run_batch(batch, 1)
             if not keep_signals:
                 results = [r if isinstance(r, BaseException) else (r[0], {}) for r in results]
             node = ray.get_runtime_context().get_node_id()
@@ -55,6 +57,7 @@ def sweep(
     runs: Sequence[Mapping[str, Any]],
     chunk_size: Optional[int] = None,
     *,
+    command: str = "simulate",
     signals: bool = True,
     progress: bool = True,
     min_task_seconds: float = 0.1,
@@ -62,6 +65,8 @@ def sweep(
 ) -> List[Union[tuple, BipedError]]:
     """Runs every option dict of ``runs`` as Ray tasks; results in input order.
 
+    ``command`` is ``"simulate"`` (each run as ``biped.simulate``, the results those of
+    ``simulate_batch``) or ``"walk"`` (as ``biped.walk``, those of ``walk_batch``).
     ``chunk_size`` runs per task (default: from a pilot run, so that a task takes at least
     ``min_task_seconds``); ``signals=False`` returns empty signal dicts (summaries only, far
     less data over the network); ``progress`` prints the runs done to stderr; ``stats``, if
@@ -73,11 +78,9 @@ def sweep(
         raise BipedError("biped.distributed.sweep: connect to a cluster first with ray.init(...)")
     if chunk_size is not None and (not isinstance(chunk_size, int) or chunk_size < 1):
         raise BipedError(f"sweep: chunk_size must be a whole number >= 1, not {chunk_size!r}")
-    batch = []
-    for k, options in enumerate(runs):
-        if not isinstance(options, Mapping):
-            raise BipedError(f"sweep: run {k} is a {type(options).__name__}, not a dict")
-        batch.append(words("simulate", options))
+    if command not in ("simulate", "walk"):
+        raise BipedError(f'sweep: command must be "simulate" or "walk", not {command!r}')
+    batch = _batch(command, runs)
     start = time.perf_counter()
     task = _chunk_task(ray)
     results: List[Any] = [None] * len(batch)
@@ -87,7 +90,7 @@ def sweep(
     first = 0
     if chunk_size is None and batch:
         # The pilot: one run, timed where it ran, sizes the chunks of the rest.
-        out, node, seconds = ray.get(task.remote(batch[:1], signals))
+        out, node, seconds = ray.get(task.remote(command, batch[:1], signals))
         results[0], first = out[0], 1
         nodes.add(node)
         done_runs = 1
@@ -95,7 +98,7 @@ def sweep(
     chunk_size = chunk_size or 1
     for lo in range(first, len(batch), chunk_size):
         hi = min(lo + chunk_size, len(batch))
-        pending[task.remote(batch[lo:hi], signals)] = (lo, hi)
+        pending[task.remote(command, batch[lo:hi], signals)] = (lo, hi)
     chunks = len(pending) + first
     while pending:
         ready, _ = ray.wait(list(pending), num_returns=1)

@@ -20,6 +20,8 @@ that failed (the others complete).
 ``summary.json`` and its CSV tables by file stem (``"none"``, ``"none_trajectory"``, ...,
 ``"dynamic"``), each a dict of arrays. A fall or a violated verdict raises ``BipedError`` with
 the line the command line exits with; ``allow_violations=True`` accepts violations.
+``walk_batch(list_of_option_dicts, threads=None)`` runs walks in parallel like
+``simulate_batch``, a fall's or violation's ``BipedError`` in its slot.
 """
 
 from __future__ import annotations
@@ -45,14 +47,26 @@ def simulate_batch(
     runs: Sequence[Mapping[str, Any]], threads: Optional[int] = None
 ) -> List[Union[Result, BipedError]]:
     """Runs every option dict of ``runs`` in parallel (``threads``, default: all cores)."""
-    batch = []
-    for k, options in enumerate(runs):
-        if not isinstance(options, Mapping):
-            raise BipedError(f"simulate_batch: run {k} is a {type(options).__name__}, not a dict")
-        batch.append(words("simulate", options))
-    return _native.simulate_batch(batch, threads)
+    return _native.simulate_batch(_batch("simulate", runs), threads)
 
 
 def walk(**options: Any) -> Tuple[Dict[str, Any], Dict[str, Signals]]:
     """Runs ``biped walk`` with ``options`` as keywords; returns ``(summary, tables)``."""
     return _native.walk(words("walk", options))
+
+
+def walk_batch(
+    runs: Sequence[Mapping[str, Any]], threads: Optional[int] = None
+) -> List[Union[Tuple[Dict[str, Any], Dict[str, Signals]], BipedError]]:
+    """Runs every option dict of ``runs`` as ``walk`` in parallel; a failed walk's error in its slot."""
+    return _native.walk_batch(_batch("walk", runs), threads)
+
+
+def _batch(command: str, runs: Sequence[Mapping[str, Any]]) -> List[List[str]]:
+    """The command-line words of every option dict of ``runs``."""
+    batch = []
+    for k, options in enumerate(runs):
+        if not isinstance(options, Mapping):
+            raise BipedError(f"{command}: run {k} is a {type(options).__name__}, not a dict")
+        batch.append(words(command, options))
+    return batch

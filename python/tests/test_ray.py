@@ -54,7 +54,9 @@ def _free_port():
 
 def _ray_cli(*args, env):
     exe = pathlib.Path(sys.executable).with_name("ray")
-    subprocess.run([str(exe), *args], env=env, check=True, capture_output=True, text=True, timeout=180)
+    done = subprocess.run([str(exe), *args], env=env, capture_output=True, text=True, timeout=180)
+    if done.returncode != 0:
+        raise RuntimeError(f"ray {' '.join(args)} failed ({done.returncode}):\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}")
 
 
 @pytest.fixture(scope="module")
@@ -62,7 +64,11 @@ def cluster():
     """A head node and a worker node on 127.0.0.1; the driver connected to the head."""
     port = _free_port()
     temp = tempfile.mkdtemp(prefix="ray", dir="/tmp")
-    env = dict(os.environ, RAY_USAGE_STATS_ENABLED="0")
+    # Ray keeps state under the home directory (an auth token from an earlier local
+    # instance would be sent to this cluster): every part of it gets the same fresh one.
+    home = os.environ.get("HOME")
+    env = dict(os.environ, RAY_USAGE_STATS_ENABLED="0", HOME=temp)
+    os.environ["HOME"] = temp
     common = ["--node-ip-address=127.0.0.1", "--num-cpus=1", "--disable-usage-stats"]
     try:
         _ray_cli("start", "--head", f"--port={port}", "--include-dashboard=false", f"--temp-dir={temp}", *common, env=env)
@@ -75,6 +81,10 @@ def cluster():
         if ray.is_initialized():
             ray.shutdown()
         subprocess.run([str(pathlib.Path(sys.executable).with_name("ray")), "stop", "--force"], env=env, capture_output=True, timeout=120)
+        if home is None:
+            os.environ.pop("HOME", None)
+        else:
+            os.environ["HOME"] = home
         shutil.rmtree(temp, ignore_errors=True)
 
 
@@ -134,6 +144,21 @@ def test_pilot_sizes_chunks(cluster):
     assert stats["chunks"] == 1 + -(-(len(RUNS[:4]) - 1) // stats["chunk_size"])
 
 
+def test_walk_sweep_equals_walk_batch(cluster):
+    walks = [dict(steps=2, method=m) for m in ("none", "minimization")] + [dict(steps=0)]
+    expected = biped.walk_batch(walks)
+    got = biped.distributed.sweep(walks, chunk_size=1, command="walk", progress=False)
+    assert isinstance(got[2], biped.BipedError) and str(got[2]) == str(expected[2])
+    for a, b in zip(expected[:2], got[:2]):
+        assert {k: v for k, v in a[0].items() if k not in TIMING | {"none", "minimization"}} == {
+            k: v for k, v in b[0].items() if k not in TIMING | {"none", "minimization"}
+        }
+        assert a[1].keys() == b[1].keys()
+        for stem in a[1]:
+            for k in a[1][stem]:
+                np.testing.assert_array_equal(a[1][stem][k], b[1][stem][k], err_msg=f"{stem}: {k}")
+
+
 def test_bad_input_raises(cluster):
     with pytest.raises(biped.BipedError, match="unknown option `speed`"):
         biped.distributed.sweep([dict(speed=1)])
@@ -141,3 +166,5 @@ def test_bad_input_raises(cluster):
         biped.distributed.sweep(RUNS, chunk_size=0)
     with pytest.raises(biped.BipedError, match="not a dict"):
         biped.distributed.sweep([3])
+    with pytest.raises(biped.BipedError, match="command"):
+        biped.distributed.sweep(RUNS, command="run")

@@ -43,3 +43,16 @@ def test_walk_errors(cli_run, tmp_path):
         biped.walk(method="moonwalk")
     with pytest.raises(biped.BipedError, match="unknown option `robot_name`"):
         biped.walk(robot_name="x")
+
+
+def test_walk_batch_equals_walk():
+    runs = [dict(steps=2, method="none"), dict(steps=2, method="compensation", step_length=0.3), dict(step_time=0.01)]
+    batch = biped.walk_batch(runs, threads=2)
+    assert isinstance(batch[2], biped.BipedError) and "--step-time" in str(batch[2])
+    for options, got in zip(runs[:2], batch):
+        summary, tables = biped.walk(**options)
+        assert _stable(got[0]) == _stable(summary)
+        assert got[1].keys() == tables.keys()
+        for stem in tables:
+            for k in tables[stem]:
+                np.testing.assert_array_equal(got[1][stem][k], tables[stem][k], err_msg=f"{stem}: {k}")
