@@ -188,8 +188,8 @@ pub fn forward_dynamics_solve<'d>(
         solve::cholesky_in_place(&mut data.factor)?;
         solve::cholesky_solve_in_place(&data.factor, &mut data.ddq);
     } else {
-        solve::ltl_in_place(&mut data.factor, &model.dof_parent, &data.mass)?;
-        solve::ltl_solve_in_place(&data.factor, &model.dof_parent, &mut data.ddq);
+        solve::ltl_in_place(&mut data.factor, &model.dof_ancestors, &data.mass)?;
+        solve::ltl_solve_in_place(&data.factor, &model.dof_ancestors, &mut data.ddq);
     }
     check::result("qddot", data.ddq.as_slice())?;
     let ddq = std::mem::take(&mut data.ddq);

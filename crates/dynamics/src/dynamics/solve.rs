@@ -1,6 +1,7 @@
 //! In-place factorisations of the mass matrix: dense Cholesky `M = U^T U` (O(n^3)) and
 //! Featherstone's reverse sparse `M = L^T L` on the DoF parent array `lambda` (thesis 2.10.1).
 
+use crate::model::DofAncestors;
 use crate::DynamicsError;
 use nalgebra::{DMatrix, DVector};
 
@@ -63,55 +64,56 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
-/// Reverse sparse factorisation `M = L^T L` in place (lower triangle), touching only the
-/// entries `(k, j)` with `j` an ancestor of `k` in `lambda`; fill-in free for tree patterns.
-/// `original` is the unfactored matrix, used for the relative pivot test.
+/// Reverse sparse factorisation `M = L^T L` in place, touching only the entries `(k, j)` with
+/// `j` an ancestor of `k` (`ancestors`, the pattern of the DoF parent array `lambda`);
+/// fill-in free for tree patterns. `L(k, j)` (`j <= k`) is stored transposed, at `(j, k)` in the
+/// upper triangle, so that each row of `L` is one contiguous column. `original` is the
+/// unfactored matrix, used for the relative pivot test.
 pub(crate) fn ltl_in_place(
     m: &mut DMatrix<f64>,
-    lambda: &[Option<usize>],
+    ancestors: &DofAncestors,
     original: &DMatrix<f64>,
 ) -> Result<(), DynamicsError> {
-    for k in (0..m.nrows()).rev() {
-        let d = m[(k, k)];
+    let n = m.nrows();
+    let a = m.as_mut_slice();
+    for k in (0..n).rev() {
+        let (left, right) = a.split_at_mut(k * n);
+        let row_k = &mut right[..n];
+        let d = row_k[k];
         check_pivot(k, d, original[(k, k)])?;
-        let a = d.sqrt();
-        m[(k, k)] = a;
-        let mut i = lambda[k];
-        while let Some(ii) = i {
-            m[(k, ii)] /= a;
-            i = lambda[ii];
+        let root = d.sqrt();
+        row_k[k] = root;
+        let anc = ancestors.of(k);
+        for &i in anc {
+            row_k[i] /= root;
         }
-        let mut i = lambda[k];
-        while let Some(ii) = i {
-            let lki = m[(k, ii)];
-            let mut j = Some(ii);
-            while let Some(jj) = j {
-                m[(ii, jj)] -= lki * m[(k, jj)];
-                j = lambda[jj];
+        for (m_i, &i) in anc.iter().enumerate() {
+            let lki = row_k[i];
+            let row_i = &mut left[i * n..i * n + n];
+            row_i[i] -= lki * lki;
+            for &j in &anc[m_i + 1..] {
+                row_i[j] -= lki * row_k[j];
             }
-            i = lambda[ii];
         }
     }
     Ok(())
 }
 
 /// Solves `L^T L x = b` in place with the factor of [`ltl_in_place`].
-pub(crate) fn ltl_solve_in_place(l: &DMatrix<f64>, lambda: &[Option<usize>], b: &mut DVector<f64>) {
+pub(crate) fn ltl_solve_in_place(l: &DMatrix<f64>, ancestors: &DofAncestors, b: &mut DVector<f64>) {
     let n = l.nrows();
+    let (a, x) = (l.as_slice(), b.as_mut_slice());
     for i in (0..n).rev() {
-        b[i] /= l[(i, i)];
-        let mut j = lambda[i];
-        while let Some(jj) = j {
-            b[jj] -= l[(i, jj)] * b[i];
-            j = lambda[jj];
+        let row = &a[i * n..i * n + n];
+        x[i] /= row[i];
+        let xi = x[i];
+        for &j in ancestors.of(i) {
+            x[j] -= row[j] * xi;
         }
     }
     for i in 0..n {
-        let mut j = lambda[i];
-        while let Some(jj) = j {
-            b[i] -= l[(i, jj)] * b[jj];
-            j = lambda[jj];
-        }
-        b[i] /= l[(i, i)];
+        let row = &a[i * n..i * n + n];
+        let s: f64 = ancestors.of(i).iter().map(|&j| row[j] * x[j]).sum();
+        x[i] = (x[i] - s) / row[i];
     }
 }

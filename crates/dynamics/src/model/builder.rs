@@ -188,6 +188,7 @@ impl ModelBuilder {
             nq: self.nq,
             nv: self.nv,
             gravity: self.gravity,
+            dof_ancestors: super::ancestors::DofAncestors::new(&self.dof_parent),
             dof_parent: self.dof_parent,
             has_rotors,
             subsystems,

@@ -1,12 +1,14 @@
 //! Immutable multibody model: bodies in strict parent-before-child order with parent, child and
 //! brother links (section 2.4.1), joints and their coordinate index sets (2.26).
 
+mod ancestors;
 mod builder;
 mod coordinates;
 pub mod coupling;
 pub(crate) mod joint;
 mod rotors;
 
+pub(crate) use ancestors::DofAncestors;
 pub use builder::{BodySpec, ModelBuilder};
 pub use coupling::{FourBar, LinearCoupling, Mechanism};
 pub use joint::JointModel;
@@ -235,6 +237,8 @@ pub struct Model {
     pub(crate) gravity: Vector3<f64>,
     /// Parent array over velocity coordinates (`lambda` of the sparse LTL factorisation).
     pub(crate) dof_parent: Vec<Option<usize>>,
+    /// The ancestors of each velocity coordinate in `dof_parent`, nearest first.
+    pub(crate) dof_ancestors: ancestors::DofAncestors,
     pub(crate) has_rotors: bool,
     /// Sub-systems generated from overlapping index sets (2.9).
     pub(crate) subsystems: Vec<Subsystem>,
