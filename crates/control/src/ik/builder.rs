@@ -1,0 +1,296 @@
+//! [`Ik`]: whole-body differential IK on any URDF model in a few lines, with the joint
+//! position and velocity limits of the URDF kept by default.
+//!
+//! Tasks are added by frame (URDF link) or joint name and stacked in a
+//! [`crate::tasks::TaskStack`]; each [`Ik::step`] is one closed-loop RMRC cycle (4.13)-(4.16)
+//! whose joint velocities stay inside the box of [`super::limits`] by saturation in the null
+//! space ([`super::saturation`]): every joint with a URDF range stays `margin` inside it and
+//! below its `<limit velocity>` (or `LimitSettings::max_velocity` where the URDF gives none).
+//! Joints without a range (continuous) are not limited. Added tasks are hard (kept exactly
+//! while the limits allow) unless given a weight; [`Ik::posture`] is soft.
+
+use super::differential::{ClosedLoopIk, CycleInput};
+use super::limits::{JointLimits, JointRange, LimitSettings};
+use super::saturation::SaturationReport;
+use super::task_map::TaskMap;
+use super::weight::Weight;
+use crate::error::IkError;
+use crate::tasks::{Frame, MomentumAxes, Task, TaskHandle, TaskKind, TaskStack};
+use biped_dynamics::urdf::UrdfModel;
+use nalgebra::{DVector, Isometry3, Matrix3, Vector3};
+
+/// Tuning of [`Ik::step`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IkOptions {
+    /// Fraction `K_x dt` of the task error removed per step (in `(0, 2)`; default 0.5).
+    pub error_fraction: f64,
+    /// Damping `lambda^2` of the solve (damped least squares, 4.4; default 1e-8).
+    pub damping: f64,
+}
+
+impl Default for IkOptions {
+    fn default() -> Self {
+        Self {
+            error_fraction: 0.5,
+            damping: 1e-8,
+        }
+    }
+}
+
+/// What one [`Ik::step`] did.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepReport {
+    /// Norm of the task error before the step.
+    pub error_norm: f64,
+    /// Joints held at their limit box by the saturation.
+    pub saturation: SaturationReport,
+}
+
+/// Differential IK on a URDF model with joint limits on (see the module docs).
+#[derive(Debug, Clone)]
+pub struct Ik {
+    stack: TaskStack,
+    links: Vec<(String, Frame)>,
+    joints: Vec<(String, usize, usize)>,
+    limits: JointLimits,
+    solver: Option<ClosedLoopIk>,
+    weight: Weight,
+    /// Step tuning.
+    pub options: IkOptions,
+}
+
+impl Ik {
+    /// IK on `urdf` with the default [`LimitSettings`] (0.01 margin).
+    pub fn new(urdf: &UrdfModel) -> Result<Self, IkError> {
+        Self::with_limits(urdf, LimitSettings::default())
+    }
+
+    /// IK on `urdf` keeping its joint ranges and velocity limits with `settings`.
+    pub fn with_limits(urdf: &UrdfModel, settings: LimitSettings) -> Result<Self, IkError> {
+        let model = &urdf.model;
+        let mut ranges = Vec::new();
+        let mut velocities = Vec::new();
+        let mut joints = Vec::new();
+        for j in &urdf.joints {
+            let b = model.body(j.body).ok_or(IkError::UnknownName(j.name.clone()))?;
+            let (qi, vi) = (b.q_index(), b.v_index());
+            joints.push((j.name.clone(), qi, vi));
+            if let Some([lower, upper]) = j.range.filter(|r| r[0].is_finite() && r[1].is_finite()) {
+                ranges.push(JointRange {
+                    q_index: qi,
+                    v_index: vi,
+                    lower,
+                    upper,
+                });
+                if let Some(v) = j.velocity {
+                    velocities.push((vi, v));
+                }
+            }
+        }
+        let limits = JointLimits::new(ranges, settings)?.with_velocities(&velocities)?;
+        let links = urdf
+            .links
+            .iter()
+            .filter_map(|l| {
+                let frame = Frame {
+                    body: l.body?,
+                    offset: l.pose,
+                };
+                Some((l.link.clone(), frame))
+            })
+            .collect();
+        Ok(Self {
+            stack: TaskStack::new(model),
+            links,
+            joints,
+            limits,
+            solver: None,
+            weight: Weight::Identity,
+            options: IkOptions::default(),
+        })
+    }
+
+    /// The frame of URDF link `name` (its body and pose in the body).
+    pub fn frame(&self, name: &str) -> Result<Frame, IkError> {
+        let found = self.links.iter().find(|(n, _)| n == name);
+        found
+            .map(|(_, f)| *f)
+            .ok_or_else(|| IkError::UnknownName(name.to_string()))
+    }
+
+    /// `(q_index, v_index)` of URDF joint `name`.
+    pub fn joint_index(&self, name: &str) -> Result<(usize, usize), IkError> {
+        let found = self.joints.iter().find(|(n, _, _)| n == name);
+        found
+            .map(|&(_, qi, vi)| (qi, vi))
+            .ok_or_else(|| IkError::UnknownName(name.to_string()))
+    }
+
+    /// The task stack (targets, weights and kinematics of the last step).
+    pub fn tasks(&self) -> &TaskStack {
+        &self.stack
+    }
+
+    /// Task `h`, e.g. to move its target.
+    pub fn task_mut(&mut self, h: TaskHandle) -> Result<&mut Task, IkError> {
+        let n = self.stack.tasks().len();
+        self.stack.task_mut(h).ok_or(IkError::Dimension {
+            what: "task handle",
+            expected: n,
+            got: h.0,
+        })
+    }
+
+    /// The joint limits kept.
+    pub fn limits(&self) -> &JointLimits {
+        &self.limits
+    }
+
+    /// Adds any task (the solver is resized at the next step).
+    pub fn add(&mut self, task: Task) -> Result<TaskHandle, IkError> {
+        self.solver = None;
+        self.stack.push(task)
+    }
+
+    /// Hard task: link `name`'s world pose at `target`.
+    pub fn frame_pose(&mut self, name: &str, target: Isometry3<f64>) -> Result<TaskHandle, IkError> {
+        let frame = self.frame(name)?;
+        self.add(Task::hard(TaskKind::Pose { frame, target }))
+    }
+
+    /// Hard task: link `name`'s world origin at `target`.
+    pub fn frame_position(
+        &mut self,
+        name: &str,
+        target: Vector3<f64>,
+    ) -> Result<TaskHandle, IkError> {
+        let frame = self.frame(name)?;
+        self.add(Task::hard(TaskKind::Position { frame, target }))
+    }
+
+    /// Hard task: link `name`'s world orientation at `target`.
+    pub fn frame_orientation(
+        &mut self,
+        name: &str,
+        target: Matrix3<f64>,
+    ) -> Result<TaskHandle, IkError> {
+        let frame = self.frame(name)?;
+        self.add(Task::hard(TaskKind::Orientation { frame, target }))
+    }
+
+    /// Hard task: link `name`'s origin at `target` in the frame of link `reference`.
+    pub fn relative_position(
+        &mut self,
+        name: &str,
+        reference: &str,
+        target: Vector3<f64>,
+    ) -> Result<TaskHandle, IkError> {
+        let (frame, reference) = (self.frame(name)?, self.frame(reference)?);
+        let kind = TaskKind::RelativePosition {
+            frame,
+            reference,
+            target,
+        };
+        self.add(Task::hard(kind))
+    }
+
+    /// Hard task: link `name`'s orientation relative to link `reference` at `target`.
+    pub fn relative_orientation(
+        &mut self,
+        name: &str,
+        reference: &str,
+        target: Matrix3<f64>,
+    ) -> Result<TaskHandle, IkError> {
+        let (frame, reference) = (self.frame(name)?, self.frame(reference)?);
+        let kind = TaskKind::RelativeOrientation {
+            frame,
+            reference,
+            target,
+        };
+        self.add(Task::hard(kind))
+    }
+
+    /// Hard task: the centre of mass at `target`.
+    pub fn com(&mut self, target: Vector3<f64>) -> Result<TaskHandle, IkError> {
+        self.add(Task::hard(TaskKind::Com { target }))
+    }
+
+    /// Soft task of weight `w`: every joint with a range towards its entry in `q0`.
+    pub fn posture(&mut self, q0: &DVector<f64>, w: f64) -> Result<TaskHandle, IkError> {
+        let joints = self
+            .limits
+            .ranges()
+            .iter()
+            .map(|r| (r.q_index, r.v_index))
+            .collect();
+        let kind = TaskKind::Posture {
+            joints,
+            target: q0.clone(),
+        };
+        self.add(Task::soft(kind, w))
+    }
+
+    /// Hard task: URDF joint `name` at `target`.
+    pub fn joint(&mut self, name: &str, target: f64) -> Result<TaskHandle, IkError> {
+        let (q_index, v_index) = self.joint_index(name)?;
+        self.add(Task::hard(TaskKind::Joint {
+            q_index,
+            v_index,
+            target,
+        }))
+    }
+
+    /// Hard task: the vertical angular momentum about the CoM `J_Lz v = lz` (7.3).
+    pub fn vertical_momentum(&mut self, lz: f64) -> Result<TaskHandle, IkError> {
+        self.add(Task::hard(TaskKind::AngularMomentum {
+            axes: MomentumAxes::Vertical,
+            target: Vector3::new(0.0, 0.0, lz),
+        }))
+    }
+
+    /// Makes task `h` soft with weight `w` (`None`: hard).
+    pub fn set_weight(&mut self, h: TaskHandle, w: Option<f64>) -> Result<(), IkError> {
+        if w.is_some_and(|w| !(w > 0.0 && w.is_finite())) {
+            return Err(IkError::InvalidParameter {
+                name: "task weight",
+                reason: "must be finite and > 0",
+            });
+        }
+        self.task_mut(h)?.weight = w;
+        Ok(())
+    }
+
+    /// One closed-loop cycle of length `dt`: the joint velocities that remove
+    /// `error_fraction` of the task error, inside the joint limits, integrated into `q`.
+    pub fn step(&mut self, q: &mut DVector<f64>, dt: f64) -> Result<StepReport, IkError> {
+        let f = self.options.error_fraction;
+        if !(dt > 0.0 && dt.is_finite()) || !(f > 0.0 && f < 2.0) {
+            return Err(IkError::InvalidParameter {
+                name: "dt / error_fraction",
+                reason: "need dt > 0 and 0 < error_fraction < 2",
+            });
+        }
+        crate::ik::linalg::check_dim("q", self.stack.nq(), q.len())?;
+        if self.solver.is_none() {
+            self.solver = Some(ClosedLoopIk::with_limits(&self.stack, self.limits.clone())?);
+        }
+        let solver = self.solver.as_mut().ok_or(IkError::NotPositiveDefinite)?;
+        let input = CycleInput {
+            gain: f / dt,
+            weight: &self.weight,
+            null_space: None,
+            damping: self.options.damping,
+            dt,
+        };
+        solver.step(&mut self.stack, q, &input)?;
+        Ok(StepReport {
+            error_norm: solver.tasks.error_norm(),
+            saturation: solver.limits().map(|s| s.report()).unwrap_or_default(),
+        })
+    }
+
+    /// Joint velocities of the last step.
+    pub fn velocities(&self) -> Option<&DVector<f64>> {
+        self.solver.as_ref().map(|s| &s.qdot)
+    }
+}
