@@ -60,9 +60,15 @@ pub struct Ik {
 }
 
 impl Ik {
-    /// IK on `urdf` with the default [`LimitSettings`] (0.01 margin).
+    /// IK on `urdf` with the default [`LimitSettings`] (0.01 margin) but a regularisation of
+    /// `1e-6` (the damping of the walking IK, 1e-3, would leave hard tasks short of their
+    /// targets by ~1e-4 against a soft posture).
     pub fn new(urdf: &UrdfModel) -> Result<Self, IkError> {
-        Self::with_limits(urdf, LimitSettings::default())
+        let settings = LimitSettings {
+            regularisation: 1e-6,
+            ..LimitSettings::default()
+        };
+        Self::with_limits(urdf, settings)
     }
 
     /// IK on `urdf` keeping its joint ranges and velocity limits with `settings`.

@@ -1,0 +1,156 @@
+//! `ik::Ik` on the Unitree G1 URDF: a reachable target is reached (checked by forward
+//! kinematics), and targets that ask to leave the joint ranges leave every joint inside its
+//! range with the margin and below its URDF velocity limit at every step, while the same
+//! tasks without limits do leave the ranges.
+
+use biped_control::ik::{ClosedLoopIk, CycleInput, Ik, LimitSettings, Weight};
+use biped_dynamics::urdf::{load_file, UrdfModel, UrdfOptions};
+use biped_dynamics::{center_of_mass, update_placements, Data, Model};
+use biped_robots::description::Robot;
+use nalgebra::{DVector, Isometry3, Matrix3, Translation3, UnitQuaternion, Vector3};
+
+const FEET: [&str; 2] = ["left_ankle_roll_link", "right_ankle_roll_link"];
+
+fn g1() -> Robot {
+    Robot::load(Robot::bundled("g1").unwrap()).unwrap()
+}
+
+/// World pose of body `name` and the CoM at `q`, by forward kinematics.
+fn pose(model: &Model, q: &DVector<f64>, name: &str) -> Isometry3<f64> {
+    let mut data = Data::new(model);
+    update_placements(model, &mut data, q).unwrap();
+    let b = model.body_id(name).unwrap();
+    Isometry3::from_parts(
+        Translation3::from(data.world_pos[b]),
+        UnitQuaternion::from_matrix(&data.world_rot[b]),
+    )
+}
+
+fn com(model: &Model, q: &DVector<f64>) -> Vector3<f64> {
+    center_of_mass(model, &mut Data::new(model), q, None)
+        .unwrap()
+        .position
+}
+
+/// Feet and CoM tasks at their values at `q`, the left foot moved by `lift`, posture soft.
+fn feet_and_com(robot: &Robot, q: &DVector<f64>, lift: Vector3<f64>) -> Ik {
+    let model = &robot.urdf.model;
+    let mut ik = Ik::new(&robot.urdf).unwrap();
+    let left = pose(model, q, FEET[0]);
+    let target = Isometry3::from_parts(Translation3::from(left.translation.vector + lift), left.rotation);
+    ik.frame_pose(FEET[0], target).unwrap();
+    ik.frame_pose(FEET[1], pose(model, q, FEET[1])).unwrap();
+    ik.com(com(model, q)).unwrap();
+    ik.posture(q, 1e-2).unwrap();
+    ik
+}
+
+#[test]
+fn reaches_a_reachable_foot_target() {
+    let robot = g1();
+    let model = &robot.urdf.model;
+    let q0 = robot.comfort.clone();
+    let lift = Vector3::new(0.05, 0.02, 0.06);
+    let mut ik = feet_and_com(&robot, &q0, lift);
+    let mut q = q0.clone();
+    for _ in 0..200 {
+        ik.step(&mut q, 0.01).unwrap();
+    }
+    let (l0, l1) = (pose(model, &q0, FEET[0]), pose(model, &q, FEET[0]));
+    let moved = l1.translation.vector - l0.translation.vector;
+    assert!((moved - lift).norm() < 1e-6, "left foot moved {moved:?}");
+    assert!(l1.rotation.angle_to(&l0.rotation) < 1e-6);
+    let (r0, r1) = (pose(model, &q0, FEET[1]), pose(model, &q, FEET[1]));
+    assert!((r1.translation.vector - r0.translation.vector).norm() < 1e-6);
+    assert!(r1.rotation.angle_to(&r0.rotation) < 1e-6);
+    assert!((com(model, &q) - com(model, &q0)).norm() < 1e-6);
+    assert!(ik.limits().min_margin(&q) > 0.0);
+}
+
+/// Runs `steps` IK steps of `dt` and checks the position and velocity limits after each one;
+/// returns the smallest distance of a joint to its shrunk range and the largest ratio of a
+/// joint speed to its velocity limit.
+fn run_within_limits(ik: &mut Ik, q: &mut DVector<f64>, steps: usize, dt: f64) -> (f64, f64) {
+    let margin = ik.limits().settings().margin;
+    let (mut closest, mut fastest) = (f64::INFINITY, 0.0_f64);
+    for step in 0..steps {
+        ik.step(q, dt).unwrap();
+        let qd = ik.velocities().unwrap();
+        let limits = ik.limits();
+        for (r, &vmax) in limits.ranges().iter().zip(limits.velocity_limits()) {
+            let x = q[r.q_index];
+            let room = (x - r.lower - margin).min(r.upper - margin - x);
+            assert!(room > -1e-9, "step {step}: joint at q {} left [{}, {}] by {room}", r.q_index, r.lower, r.upper);
+            closest = closest.min(room);
+            let speed = qd[r.v_index].abs();
+            assert!(speed <= vmax * (1.0 + 1e-12), "step {step}: v index {} at {speed} > {vmax}", r.v_index);
+            fastest = fastest.max(speed / vmax);
+        }
+    }
+    (closest, fastest)
+}
+
+#[test]
+fn a_foot_target_half_a_metre_away_keeps_every_joint_inside_its_limits() {
+    let robot = g1();
+    let model = &robot.urdf.model;
+    let q0 = robot.comfort.clone();
+    // 0.5 m across, under the other foot: past the hip roll's inward range
+    let far = Vector3::new(0.1, -0.5, 0.05);
+    let mut ik = feet_and_com(&robot, &q0, far);
+    let mut q = q0.clone();
+    let (closest, fastest) = run_within_limits(&mut ik, &mut q, 1500, 1e-3);
+    // the limits did bind: some joint ends on its shrunk range, some step at its speed limit
+    assert!(closest < 1e-6, "no joint reached its range: {closest}");
+    assert!(fastest > 1.0 - 1e-9, "no joint reached its velocity limit: {fastest}");
+    // the right foot and the CoM, still feasible, are kept
+    let (r0, r1) = (pose(model, &q0, FEET[1]), pose(model, &q, FEET[1]));
+    assert!((r1.translation.vector - r0.translation.vector).norm() < 1e-3);
+
+    // without limits the same tasks drive joints out of their ranges
+    let mut tasks = ik.tasks().clone();
+    let mut free = ClosedLoopIk::new(&tasks);
+    let weight = Weight::Identity;
+    let input = CycleInput { gain: 0.5 / 1e-3, weight: &weight, null_space: None, damping: 1e-8, dt: 1e-3 };
+    let mut q = q0.clone();
+    let mut worst = f64::INFINITY;
+    for _ in 0..1500 {
+        if free.step(&mut tasks, &mut q, &input).is_err() {
+            break;
+        }
+        worst = worst.min(ik.limits().min_margin(&q));
+    }
+    assert!(worst < -0.05, "the unlimited IK stays inside: {worst}");
+}
+
+#[test]
+fn fixed_base_leg_stretched_past_its_reach_stays_in_range() {
+    // pelvis welded to the world: the left foot asked 0.5 m across, past the hip roll range
+    let path = Robot::bundled("g1").unwrap().parent().unwrap().join("../../dynamics/data/g1_29dof_rev_1_0.urdf");
+    let urdf: UrdfModel = load_file(path, &UrdfOptions::default()).unwrap();
+    let model = &urdf.model;
+    let mut q = model.neutral();
+    let settings = LimitSettings { margin: 0.02, ..LimitSettings::default() };
+    let mut ik = Ik::with_limits(&urdf, settings).unwrap();
+    let start = pose(model, &q, FEET[0]);
+    let target = Translation3::from(start.translation.vector + Vector3::new(0.0, -0.5, 0.1));
+    ik.frame_position(FEET[0], target.vector).unwrap();
+    ik.frame_orientation(FEET[0], Matrix3::identity()).unwrap();
+    let (closest, _) = run_within_limits(&mut ik, &mut q, 2000, 1e-3);
+    assert!(closest < 1e-6, "no joint reached its range: {closest}");
+    assert!(ik.limits().min_margin(&q) >= 0.02 - 1e-9);
+}
+
+#[test]
+fn bad_names_and_steps_are_errors() {
+    let robot = g1();
+    let mut ik = Ik::new(&robot.urdf).unwrap();
+    assert!(ik.frame_pose("left_foot", Isometry3::identity()).is_err());
+    assert!(ik.joint("left_kne_joint", 0.0).is_err());
+    let h = ik.joint("left_knee_joint", 0.5).unwrap();
+    assert!(ik.set_weight(h, Some(f64::NAN)).is_err());
+    let mut q = robot.comfort.clone();
+    assert!(ik.step(&mut q, 0.0).is_err());
+    assert!(ik.step(&mut DVector::zeros(3), 0.01).is_err());
+    ik.step(&mut q, 0.01).unwrap();
+}
