@@ -37,7 +37,10 @@ fn feet_and_com(robot: &Robot, q: &DVector<f64>, lift: Vector3<f64>) -> Ik {
     let model = &robot.urdf.model;
     let mut ik = Ik::new(&robot.urdf).unwrap();
     let left = pose(model, q, FEET[0]);
-    let target = Isometry3::from_parts(Translation3::from(left.translation.vector + lift), left.rotation);
+    let target = Isometry3::from_parts(
+        Translation3::from(left.translation.vector + lift),
+        left.rotation,
+    );
     ik.frame_pose(FEET[0], target).unwrap();
     ik.frame_pose(FEET[1], pose(model, q, FEET[1])).unwrap();
     ik.com(com(model, q)).unwrap();
@@ -80,10 +83,20 @@ fn run_within_limits(ik: &mut Ik, q: &mut DVector<f64>, steps: usize, dt: f64) -
         for (r, &vmax) in limits.ranges().iter().zip(limits.velocity_limits()) {
             let x = q[r.q_index];
             let room = (x - r.lower - margin).min(r.upper - margin - x);
-            assert!(room > -1e-9, "step {step}: joint at q {} left [{}, {}] by {room}", r.q_index, r.lower, r.upper);
+            assert!(
+                room > -1e-9,
+                "step {step}: joint at q {} left [{}, {}] by {room}",
+                r.q_index,
+                r.lower,
+                r.upper
+            );
             closest = closest.min(room);
             let speed = qd[r.v_index].abs();
-            assert!(speed <= vmax * (1.0 + 1e-12), "step {step}: v index {} at {speed} > {vmax}", r.v_index);
+            assert!(
+                speed <= vmax * (1.0 + 1e-12),
+                "step {step}: v index {} at {speed} > {vmax}",
+                r.v_index
+            );
             fastest = fastest.max(speed / vmax);
         }
     }
@@ -102,7 +115,10 @@ fn a_foot_target_half_a_metre_away_keeps_every_joint_inside_its_limits() {
     let (closest, fastest) = run_within_limits(&mut ik, &mut q, 1500, 1e-3);
     // the limits did bind: some joint ends on its shrunk range, some step at its speed limit
     assert!(closest < 1e-6, "no joint reached its range: {closest}");
-    assert!(fastest > 1.0 - 1e-9, "no joint reached its velocity limit: {fastest}");
+    assert!(
+        fastest > 1.0 - 1e-9,
+        "no joint reached its velocity limit: {fastest}"
+    );
     // the right foot and the CoM, still feasible, are kept
     let (r0, r1) = (pose(model, &q0, FEET[1]), pose(model, &q, FEET[1]));
     assert!((r1.translation.vector - r0.translation.vector).norm() < 1e-3);
@@ -111,7 +127,13 @@ fn a_foot_target_half_a_metre_away_keeps_every_joint_inside_its_limits() {
     let mut tasks = ik.tasks().clone();
     let mut free = ClosedLoopIk::new(&tasks);
     let weight = Weight::Identity;
-    let input = CycleInput { gain: 0.5 / 1e-3, weight: &weight, null_space: None, damping: 1e-8, dt: 1e-3 };
+    let input = CycleInput {
+        gain: 0.5 / 1e-3,
+        weight: &weight,
+        null_space: None,
+        damping: 1e-8,
+        dt: 1e-3,
+    };
     let mut q = q0.clone();
     let mut worst = f64::INFINITY;
     for _ in 0..1500 {
@@ -126,11 +148,18 @@ fn a_foot_target_half_a_metre_away_keeps_every_joint_inside_its_limits() {
 #[test]
 fn fixed_base_leg_stretched_past_its_reach_stays_in_range() {
     // pelvis welded to the world: the left foot asked 0.5 m across, past the hip roll range
-    let path = Robot::bundled("g1").unwrap().parent().unwrap().join("../../dynamics/data/g1_29dof_rev_1_0.urdf");
+    let path = Robot::bundled("g1")
+        .unwrap()
+        .parent()
+        .unwrap()
+        .join("../../dynamics/data/g1_29dof_rev_1_0.urdf");
     let urdf: UrdfModel = load_file(path, &UrdfOptions::default()).unwrap();
     let model = &urdf.model;
     let mut q = model.neutral();
-    let settings = LimitSettings { margin: 0.02, ..LimitSettings::default() };
+    let settings = LimitSettings {
+        margin: 0.02,
+        ..LimitSettings::default()
+    };
     let mut ik = Ik::with_limits(&urdf, settings).unwrap();
     let start = pose(model, &q, FEET[0]);
     let target = Translation3::from(start.translation.vector + Vector3::new(0.0, -0.5, 0.1));

@@ -43,7 +43,10 @@ fn fk(model: &Model, q: &DVector<f64>, f: &Frame) -> (Matrix3<f64>, Vector3<f64>
         UnitQuaternion::from_matrix(&data.world_rot[f.body]),
     );
     let pose = body * f.offset;
-    (pose.rotation.to_rotation_matrix().into_inner(), pose.translation.vector)
+    (
+        pose.rotation.to_rotation_matrix().into_inner(),
+        pose.translation.vector,
+    )
 }
 
 /// A random configuration inside the limits and a random velocity from `u` (values in [0, 1)).
@@ -68,7 +71,10 @@ fn state(u: &[f64]) -> (DVector<f64>, DVector<f64>) {
 /// Angular momentum about the CoM from finite differences of the body poses: the sum of
 /// `R I_c R^T w + m (c_b - c) x cdot_b` with `w` and `cdot_b` differenced.
 fn momentum_fd(model: &Model, q: &DVector<f64>, v: &DVector<f64>, h: f64) -> Vector3<f64> {
-    let (qp, qm) = (integrate(model, q, v, h).unwrap(), integrate(model, q, v, -h).unwrap());
+    let (qp, qm) = (
+        integrate(model, q, v, h).unwrap(),
+        integrate(model, q, v, -h).unwrap(),
+    );
     let (mut d0, mut dp, mut dm) = (Data::new(model), Data::new(model), Data::new(model));
     update_placements(model, &mut d0, q).unwrap();
     update_placements(model, &mut dp, &qp).unwrap();
@@ -97,7 +103,11 @@ fn jv(kind: TaskKind, q: &DVector<f64>, v: &DVector<f64>) -> (DVector<f64>, DVec
 }
 
 /// Central difference `(f(q (+) h v) - f(q (+) -h v)) / 2h` of a vector quantity.
-fn fd(q: &DVector<f64>, v: &DVector<f64>, f: impl Fn(&DVector<f64>) -> Vector3<f64>) -> Vector3<f64> {
+fn fd(
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    f: impl Fn(&DVector<f64>) -> Vector3<f64>,
+) -> Vector3<f64> {
     let model = &g1().robot.urdf.model;
     let h = 1e-6;
     (f(&integrate(model, q, v, h).unwrap()) - f(&integrate(model, q, v, -h).unwrap())) / (2.0 * h)
@@ -105,17 +115,27 @@ fn fd(q: &DVector<f64>, v: &DVector<f64>, f: impl Fn(&DVector<f64>) -> Vector3<f
 
 /// Central difference of a rotation: `log(R(+) R(-)^T) / 2h` (the angular velocity, in the
 /// axes `R` is expressed in).
-fn fd_rot(q: &DVector<f64>, v: &DVector<f64>, f: impl Fn(&DVector<f64>) -> Matrix3<f64>) -> Vector3<f64> {
+fn fd_rot(
+    q: &DVector<f64>,
+    v: &DVector<f64>,
+    f: impl Fn(&DVector<f64>) -> Matrix3<f64>,
+) -> Vector3<f64> {
     let model = &g1().robot.urdf.model;
     let h = 1e-6;
-    let (rp, rm) = (f(&integrate(model, q, v, h).unwrap()), f(&integrate(model, q, v, -h).unwrap()));
+    let (rp, rm) = (
+        f(&integrate(model, q, v, h).unwrap()),
+        f(&integrate(model, q, v, -h).unwrap()),
+    );
     rotation_log(&(rp * rm.transpose())) / (2.0 * h)
 }
 
 fn close(a: &[f64], b: &[f64], what: &str) -> Result<(), TestCaseError> {
     let scale = 1.0 + b.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
     for (x, y) in a.iter().zip(b) {
-        prop_assert!((x - y).abs() < 2e-6 * scale, "{what}: J v {a:?} vs FD {b:?}");
+        prop_assert!(
+            (x - y).abs() < 2e-6 * scale,
+            "{what}: J v {a:?} vs FD {b:?}"
+        );
     }
     Ok(())
 }
@@ -195,14 +215,33 @@ fn errors_point_from_the_current_value_to_the_target() {
     let hand = frame("left_rubber_hand");
     let (rot, pos) = fk(model, &q, &hand);
     let dx = Vector3::new(0.01, -0.02, 0.03);
-    let (_, err) = jv(TaskKind::Position { frame: hand, target: pos + dx }, &q, &v0());
+    let (_, err) = jv(
+        TaskKind::Position {
+            frame: hand,
+            target: pos + dx,
+        },
+        &q,
+        &v0(),
+    );
     assert!((Vector3::new(err[0], err[1], err[2]) - dx).norm() < 1e-12);
     // a target turned by dw (world axes) gives the error dw
     let dw = Vector3::new(0.02, 0.01, -0.03);
-    let target = UnitQuaternion::from_scaled_axis(dw).to_rotation_matrix().into_inner() * rot;
-    let (_, err) = jv(TaskKind::Orientation { frame: hand, target }, &q, &v0());
+    let target = UnitQuaternion::from_scaled_axis(dw)
+        .to_rotation_matrix()
+        .into_inner()
+        * rot;
+    let (_, err) = jv(
+        TaskKind::Orientation {
+            frame: hand,
+            target,
+        },
+        &q,
+        &v0(),
+    );
     assert!((Vector3::new(err[0], err[1], err[2]) - dw).norm() < 1e-12);
-    let c = center_of_mass(model, &mut Data::new(model), &q, None).unwrap().position;
+    let c = center_of_mass(model, &mut Data::new(model), &q, None)
+        .unwrap()
+        .position;
     let (_, err) = jv(TaskKind::Com { target: c + dx }, &q, &v0());
     assert!((Vector3::new(err[0], err[1], err[2]) - dx).norm() < 1e-12);
 }
@@ -218,14 +257,26 @@ fn the_stack_is_the_tasks_rows_in_order_with_weights_as_softness() {
     let q = robot.comfort.clone();
     let hand = frame("left_rubber_hand");
     let kinds = [
-        TaskKind::Com { target: Vector3::new(0.0, 0.0, 0.7) },
-        TaskKind::Pose { frame: hand, target: Isometry3::translation(0.3, 0.2, 1.0) },
-        TaskKind::AngularMomentum { axes: MomentumAxes::Vertical, target: Vector3::new(0.0, 0.0, 0.4) },
+        TaskKind::Com {
+            target: Vector3::new(0.0, 0.0, 0.7),
+        },
+        TaskKind::Pose {
+            frame: hand,
+            target: Isometry3::translation(0.3, 0.2, 1.0),
+        },
+        TaskKind::AngularMomentum {
+            axes: MomentumAxes::Vertical,
+            target: Vector3::new(0.0, 0.0, 0.4),
+        },
     ];
     let mut stack = TaskStack::new(model);
     let mut rows = Vec::new();
     for (k, kind) in kinds.iter().enumerate() {
-        let task = if k == 1 { Task::soft(kind.clone(), 4.0) } else { Task::hard(kind.clone()) };
+        let task = if k == 1 {
+            Task::soft(kind.clone(), 4.0)
+        } else {
+            Task::hard(kind.clone())
+        };
         stack.push(task).unwrap();
         let mut v = DVector::zeros(model.nv());
         v[7 + k] = 1.0; // some joint velocity
@@ -250,8 +301,12 @@ fn the_stack_is_the_tasks_rows_in_order_with_weights_as_softness() {
     let mut ff = DVector::zeros(m);
     stack.feedforward(&mut ff);
     assert_eq!(ff[9], 0.4); // the momentum target is the task velocity
-    // bad tasks are rejected
-    let bad = TaskKind::Joint { q_index: 99, v_index: 0, target: 0.0 };
+                            // bad tasks are rejected
+    let bad = TaskKind::Joint {
+        q_index: 99,
+        v_index: 0,
+        target: 0.0,
+    };
     assert!(stack.push(Task::hard(bad)).is_err());
     assert!(stack.push(Task::soft(kinds[0].clone(), -1.0)).is_err());
 }

@@ -19,7 +19,12 @@ fn g1_text() -> String {
 
 /// Loads `text` as if it were `data/g1.toml` (same folder), without any package folders.
 fn parse(text: &str) -> Result<Robot, DescriptionError> {
-    Robot::parse(text, "g1.toml", &data_dir(), &PackagePath::new(vec![], None))
+    Robot::parse(
+        text,
+        "g1.toml",
+        &data_dir(),
+        &PackagePath::new(vec![], None),
+    )
 }
 
 /// 1-based line of the first line of `text` containing `needle`.
@@ -103,7 +108,10 @@ fn documented_example_loads() {
     assert_eq!(robot.description.comfort_joints.len(), 2);
     let pairs = robot.description.collision_pairs.as_ref().unwrap();
     assert_eq!(robot.description.collision_exclude.len(), 1);
-    assert_eq!(robot.collision.unwrap().model.pairs().len(), pairs.len() - 1);
+    assert_eq!(
+        robot.collision.unwrap().model.pairs().len(),
+        pairs.len() - 1
+    );
 }
 
 #[test]
@@ -135,7 +143,9 @@ fn talos_is_found_through_robots_or_names_what_to_install() {
 fn assert_located(from: &str, to: &str, at: Option<&str>, field: &str, says: &str) {
     let text = g1_text().replacen(from, to, 1);
     assert_ne!(text, g1_text(), "{from} not in g1.toml");
-    let err = parse(&text).err().unwrap_or_else(|| panic!("{to}: accepted"));
+    let err = parse(&text)
+        .err()
+        .unwrap_or_else(|| panic!("{to}: accepted"));
     let message = err.to_string();
     let line = line_of(&text, at.unwrap_or(to));
     assert!(
@@ -248,11 +258,5 @@ fn syntax_and_field_errors_are_located() {
         "missing field `frame`",
     );
     // broken TOML
-    assert_located(
-        "name = \"g1\"",
-        "name = \"g1",
-        None,
-        "name",
-        "",
-    );
+    assert_located("name = \"g1\"", "name = \"g1", None, "name", "");
 }

@@ -78,7 +78,9 @@ impl Ik {
         let mut velocities = Vec::new();
         let mut joints = Vec::new();
         for j in &urdf.joints {
-            let b = model.body(j.body).ok_or(IkError::UnknownName(j.name.clone()))?;
+            let b = model
+                .body(j.body)
+                .ok_or(IkError::UnknownName(j.name.clone()))?;
             let (qi, vi) = (b.q_index(), b.v_index());
             joints.push((j.name.clone(), qi, vi));
             if let Some([lower, upper]) = j.range.filter(|r| r[0].is_finite() && r[1].is_finite()) {
@@ -159,7 +161,11 @@ impl Ik {
     }
 
     /// Hard task: link `name`'s world pose at `target`.
-    pub fn frame_pose(&mut self, name: &str, target: Isometry3<f64>) -> Result<TaskHandle, IkError> {
+    pub fn frame_pose(
+        &mut self,
+        name: &str,
+        target: Isometry3<f64>,
+    ) -> Result<TaskHandle, IkError> {
         let frame = self.frame(name)?;
         self.add(Task::hard(TaskKind::Pose { frame, target }))
     }

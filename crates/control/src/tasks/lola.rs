@@ -15,12 +15,12 @@
 //! Inactive tasks (activation weight 0) are left out of the stack; blended tasks get the
 //! row softness of [`crate::ik::blend`].
 
+use super::rows::{com_jacobian_from_ag, put_rows};
 use super::targets::{FootFrame, LolaTargets, TaskId};
 use crate::error::IkError;
 use crate::ik::blend::Activation;
 use crate::ik::orientation::orientation_error;
 use crate::ik::TaskMap;
-use super::rows::{com_jacobian_from_ag, put_rows};
 use biped_dynamics::{Centroidal, Data, JacobianFrame, Jacobians, Model};
 use biped_robots::lola::LolaModel;
 use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Vector3};

@@ -17,11 +17,11 @@ mod retract;
 mod rows;
 mod se3;
 mod stack;
-pub mod task;
 mod targets;
+pub mod task;
 
 pub use lola::LolaTasks;
-pub use stack::{TaskHandle, TaskStack};
-pub use task::{Frame, MomentumAxes, Task, TaskKind};
 pub use pose::{lola_joint_cost, standing_configuration};
+pub use stack::{TaskHandle, TaskStack};
 pub use targets::{FootFrame, LolaTargets, TaskId};
+pub use task::{Frame, MomentumAxes, Task, TaskKind};

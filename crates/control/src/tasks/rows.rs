@@ -38,4 +38,3 @@ pub(crate) fn put_rows(
         }
     }
 }
-

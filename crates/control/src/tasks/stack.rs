@@ -125,13 +125,19 @@ impl TaskStack {
         if ok {
             Ok(())
         } else {
-            bad("task", "body, joint index or target length does not fit the model")
+            bad(
+                "task",
+                "body, joint index or target length does not fit the model",
+            )
         }
     }
 
     /// World rotation and origin of `frame` at the last kinematics pass.
     fn frame_pose(&self, frame: &Frame) -> (Matrix3<f64>, Vector3<f64>) {
-        let (rot, pos) = (self.data.world_rot[frame.body], self.data.world_pos[frame.body]);
+        let (rot, pos) = (
+            self.data.world_rot[frame.body],
+            self.data.world_pos[frame.body],
+        );
         let off = &frame.offset;
         (
             rot * off.rotation.to_rotation_matrix().into_inner(),
@@ -187,7 +193,9 @@ impl TaskStack {
                 let rb = self.data.world_rot[reference.body];
                 let in_ref_body = rb.transpose() * (p - self.data.world_pos[reference.body]);
                 let t = frame.offset.translation.vector;
-                self.jac.point_jacobian(frame.body, &t, &mut self.j3).map_err(kin)?;
+                self.jac
+                    .point_jacobian(frame.body, &t, &mut self.j3)
+                    .map_err(kin)?;
                 self.jac
                     .point_jacobian(reference.body, &in_ref_body, &mut self.j3r)
                     .map_err(kin)?;
@@ -254,7 +262,9 @@ impl TaskStack {
         out: &mut DMatrix<f64>,
     ) -> Result<(), IkError> {
         let t = frame.offset.translation.vector;
-        self.jac.point_jacobian(frame.body, &t, &mut self.j3).map_err(kin)?;
+        self.jac
+            .point_jacobian(frame.body, &t, &mut self.j3)
+            .map_err(kin)?;
         put_rows(out, r, &Matrix3::identity(), &self.j3, 0, None, 0);
         let (_, p) = self.frame_pose(frame);
         err.fixed_rows_mut::<3>(r).copy_from(&(target - p));
@@ -336,7 +346,9 @@ impl TaskMap for TaskStack {
                 .map_err(kin)?;
             let ag = self.cen.ag().map_err(kin)?;
             com_jacobian_from_ag(ag, self.cen.mass(), &mut self.jc);
-            self.cen.angular_momentum_jacobian(&mut self.jl).map_err(kin)?;
+            self.cen
+                .angular_momentum_jacobian(&mut self.jl)
+                .map_err(kin)?;
         }
         let mut r = 0;
         for k in 0..self.tasks.len() {

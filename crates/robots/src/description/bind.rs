@@ -27,8 +27,8 @@ pub(super) fn load_text(text: &str, file: &str, base: &Path, packages: &PackageP
         floating: raw.floating,
         ..UrdfOptions::default()
     };
-    let urdf = load_file(&urdf_path, &options)
-        .map_err(|e| loc.referenced(raw.urdf.span(), "urdf", e))?;
+    let urdf =
+        load_file(&urdf_path, &options).map_err(|e| loc.referenced(raw.urdf.span(), "urdf", e))?;
     let srdf_path = raw.drives.srdf.as_ref().map(|s| find(s, "drives.srdf"));
     let srdf_path = srdf_path.transpose()?;
     let srdf = match (&srdf_path, &raw.drives.srdf) {
@@ -65,7 +65,10 @@ pub(super) fn load_text(text: &str, file: &str, base: &Path, packages: &PackageP
             .collect(),
     };
     let comfort = names.comfort(&raw, srdf.as_ref())?;
-    let collision_path = raw.collision.as_ref().map(|c| find(&c.model, "collision.model"));
+    let collision_path = raw
+        .collision
+        .as_ref()
+        .map(|c| find(&c.model, "collision.model"));
     let collision_path = collision_path.transpose()?;
     let collision = match (&raw.collision, &collision_path) {
         (Some(c), Some(path)) => Some(collision(&loc, c, path, &urdf)?),
@@ -110,23 +113,31 @@ fn resolve(
     base: &Path,
     packages: &PackagePath,
 ) -> Res<PathBuf> {
-    packages.resolve(reference.get_ref(), base).map_err(|source| {
-        let hint = match source {
-            ResolveError::PackageNotFound { .. } => INSTALL_HINT.to_string(),
-            _ => String::new(),
-        };
-        loc.referenced(
-            reference.span(),
-            field,
-            ReferencedError::Resolve { source, hint },
-        )
-    })
+    packages
+        .resolve(reference.get_ref(), base)
+        .map_err(|source| {
+            let hint = match source {
+                ResolveError::PackageNotFound { .. } => INSTALL_HINT.to_string(),
+                _ => String::new(),
+            };
+            loc.referenced(
+                reference.span(),
+                field,
+                ReferencedError::Resolve { source, hint },
+            )
+        })
 }
 
 /// The explicit pair list of `[collision]`, if any.
 fn collision_pairs(c: &Option<RawCollision>) -> Option<Vec<[String; 2]>> {
     let pairs = c.as_ref()?.pairs.as_ref()?;
-    Some(pairs.get_ref().iter().map(|p| p.get_ref().clone()).collect())
+    Some(
+        pairs
+            .get_ref()
+            .iter()
+            .map(|p| p.get_ref().clone())
+            .collect(),
+    )
 }
 
 /// Loads the SSV model, binds its bodies to the URDF's, and applies the pair list.
@@ -227,9 +238,14 @@ impl Checker<'_> {
     /// A list of joints (non-empty unless `may_be_empty`).
     fn joints(&self, list: &Names, field: &str, may_be_empty: bool) -> Res<Vec<String>> {
         if list.get_ref().is_empty() && !may_be_empty {
-            return Err(self.loc.invalid(list.span(), field, "must list at least one joint"));
+            return Err(self
+                .loc
+                .invalid(list.span(), field, "must list at least one joint"));
         }
-        list.get_ref().iter().map(|n| self.joint(n, field)).collect()
+        list.get_ref()
+            .iter()
+            .map(|n| self.joint(n, field))
+            .collect()
     }
 
     /// The producing list: joints, none of them reducing.
@@ -249,17 +265,23 @@ impl Checker<'_> {
         let frame = raw.frame.get_ref();
         if !self.urdf.links.iter().any(|l| &l.link == frame) {
             let reason = format!("`{frame}` is not a link of the URDF");
-            return Err(self.loc.invalid(raw.frame.span(), format!("{field}.frame"), reason));
+            return Err(self
+                .loc
+                .invalid(raw.frame.span(), format!("{field}.frame"), reason));
         }
         let c = *raw.sole_center.get_ref();
         if c.iter().any(|v| !v.is_finite()) {
             let f = format!("{field}.sole_center");
-            return Err(self.loc.invalid(raw.sole_center.span(), f, "must be finite"));
+            return Err(self
+                .loc
+                .invalid(raw.sole_center.span(), f, "must be finite"));
         }
         let s = *raw.sole_size.get_ref();
         if s.iter().any(|v| !(*v > 0.0 && v.is_finite())) {
             let f = format!("{field}.sole_size");
-            return Err(self.loc.invalid(raw.sole_size.span(), f, "length and width must be > 0"));
+            return Err(self
+                .loc
+                .invalid(raw.sole_size.span(), f, "length and width must be > 0"));
         }
         let toe = raw.toe_joint.as_ref();
         let toe_joint = toe.map(|t| self.joint(t, &format!("{field}.toe_joint")));
@@ -320,7 +342,12 @@ impl Checker<'_> {
         for (k, entry) in raw.drives.armature.iter().enumerate() {
             let field = format!("drives.armature[{k}]");
             let (pattern, v) = (&entry.get_ref().joints, entry.get_ref().inertia);
-            if !self.urdf.joints.iter().any(|j| glob_match(pattern, &j.name)) {
+            if !self
+                .urdf
+                .joints
+                .iter()
+                .any(|j| glob_match(pattern, &j.name))
+            {
                 let reason = format!("`{pattern}` matches no movable joint of the URDF");
                 return Err(self.loc.invalid(entry.span(), field, reason));
             }
