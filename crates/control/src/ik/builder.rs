@@ -276,7 +276,7 @@ impl Ik {
     /// `error_fraction` of the task error, inside the joint limits, integrated into `q`.
     pub fn step(&mut self, q: &mut DVector<f64>, dt: f64) -> Result<StepReport, IkError> {
         let f = self.options.error_fraction;
-        if !(dt > 0.0 && dt.is_finite()) || !(f > 0.0 && f < 2.0) {
+        if !(dt > 0.0 && dt.is_finite() && f > 0.0 && f < 2.0) {
             return Err(IkError::InvalidParameter {
                 name: "dt / error_fraction",
                 reason: "need dt > 0 and 0 < error_fraction < 2",

@@ -74,7 +74,7 @@ pub enum DescriptionError {
         /// Field holding the reference.
         field: String,
         /// The referenced file's error (itself located in that file).
-        source: ReferencedError,
+        source: Box<ReferencedError>,
     },
 }
 
@@ -142,7 +142,7 @@ impl Locator<'_> {
             file: self.file.to_string(),
             line: self.line_of(span.start),
             field: field.to_string(),
-            source: source.into(),
+            source: Box::new(source.into()),
         }
     }
 
