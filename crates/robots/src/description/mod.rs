@@ -24,6 +24,8 @@
 //! ```
 
 mod bind;
+mod check;
+mod collision;
 mod error;
 mod raw;
 
@@ -177,7 +179,7 @@ impl Robot {
     /// Reflected rotor inertia of joint `name`: the first `armature` entry that matches, else 0.
     pub fn armature(&self, name: &str) -> f64 {
         let a = &self.description.armature;
-        let hit = a.iter().find(|(p, _)| bind::glob_match(p, name));
+        let hit = a.iter().find(|(p, _)| check::glob_match(p, name));
         hit.map_or(0.0, |(_, v)| *v)
     }
 }

@@ -2,13 +2,14 @@
 //! [`TaskMap`] (one kinematics pass, one centroidal pass when a CoM or momentum task needs it,
 //! no allocation per evaluation).
 
+mod frames;
+
 use super::rows::{com_jacobian_from_ag, put_rows};
 use super::task::{Frame, MomentumAxes, Task, TaskKind};
 use crate::error::IkError;
-use crate::ik::orientation::orientation_error;
 use crate::ik::TaskMap;
-use biped_dynamics::{Centroidal, Data, JacobianError, JacobianFrame, Jacobians, Model};
-use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
+use biped_dynamics::{Centroidal, Data, JacobianError, Jacobians, Model};
+use nalgebra::{DMatrix, DVector, Matrix3};
 
 /// Index of a task in its [`TaskStack`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -132,31 +133,7 @@ impl TaskStack {
         }
     }
 
-    /// World rotation and origin of `frame` at the last kinematics pass.
-    fn frame_pose(&self, frame: &Frame) -> (Matrix3<f64>, Vector3<f64>) {
-        let (rot, pos) = (
-            self.data.world_rot[frame.body],
-            self.data.world_pos[frame.body],
-        );
-        let off = &frame.offset;
-        (
-            rot * off.rotation.to_rotation_matrix().into_inner(),
-            pos + rot * off.translation.vector,
-        )
-    }
-
-    /// Angular rows (world-aligned `J_w`) of `frame`'s body into `j6` (`reference`: `j6r`).
-    fn angular(&mut self, frame: &Frame, reference: bool) -> Result<(), IkError> {
-        let out = if reference {
-            &mut self.j6r
-        } else {
-            &mut self.j6
-        };
-        let f = JacobianFrame::WorldAligned;
-        self.jac.body_jacobian(frame.body, f, out).map_err(kin)
-    }
-
-    /// Error and Jacobian rows of task `k` from row `r`; returns the error rows' values.
+    /// Error and Jacobian rows of task `k` from row `r`.
     fn write_task(
         &mut self,
         k: usize,
@@ -188,20 +165,7 @@ impl TaskStack {
                 target,
             } => {
                 let (frame, reference, target) = (*frame, *reference, *target);
-                let (ar, pr) = self.frame_pose(&reference);
-                let (_, p) = self.frame_pose(&frame);
-                let rb = self.data.world_rot[reference.body];
-                let in_ref_body = rb.transpose() * (p - self.data.world_pos[reference.body]);
-                let t = frame.offset.translation.vector;
-                self.jac
-                    .point_jacobian(frame.body, &t, &mut self.j3)
-                    .map_err(kin)?;
-                self.jac
-                    .point_jacobian(reference.body, &in_ref_body, &mut self.j3r)
-                    .map_err(kin)?;
-                put_rows(out, r, &ar.transpose(), &self.j3, 0, Some(&self.j3r), 0);
-                err.fixed_rows_mut::<3>(r)
-                    .copy_from(&(target - ar.transpose() * (p - pr)));
+                self.write_relative_position(&frame, &reference, &target, r, err, out)?;
             }
             TaskKind::RelativeOrientation {
                 frame,
@@ -209,13 +173,7 @@ impl TaskStack {
                 target,
             } => {
                 let (frame, reference, target) = (*frame, *reference, *target);
-                let (ar, _) = self.frame_pose(&reference);
-                let (a, _) = self.frame_pose(&frame);
-                self.angular(&frame, false)?;
-                self.angular(&reference, true)?;
-                put_rows(out, r, &ar.transpose(), &self.j6, 0, Some(&self.j6r), 0);
-                let e = orientation_error(&target, &(ar.transpose() * a));
-                err.fixed_rows_mut::<3>(r).copy_from(&e);
+                self.write_relative_orientation(&frame, &reference, &target, r, err, out)?;
             }
             TaskKind::Com { target } => {
                 put_rows(out, r, &id, &self.jc, 0, None, 0);
@@ -249,42 +207,6 @@ impl TaskStack {
                 }
             }
         }
-        Ok(())
-    }
-
-    /// Rows of a position task at row `r`.
-    fn write_position(
-        &mut self,
-        frame: &Frame,
-        target: &Vector3<f64>,
-        r: usize,
-        err: &mut DVector<f64>,
-        out: &mut DMatrix<f64>,
-    ) -> Result<(), IkError> {
-        let t = frame.offset.translation.vector;
-        self.jac
-            .point_jacobian(frame.body, &t, &mut self.j3)
-            .map_err(kin)?;
-        put_rows(out, r, &Matrix3::identity(), &self.j3, 0, None, 0);
-        let (_, p) = self.frame_pose(frame);
-        err.fixed_rows_mut::<3>(r).copy_from(&(target - p));
-        Ok(())
-    }
-
-    /// Rows of an orientation task at row `r`.
-    fn write_orientation(
-        &mut self,
-        frame: &Frame,
-        target: &Matrix3<f64>,
-        r: usize,
-        err: &mut DVector<f64>,
-        out: &mut DMatrix<f64>,
-    ) -> Result<(), IkError> {
-        self.angular(frame, false)?;
-        put_rows(out, r, &Matrix3::identity(), &self.j6, 0, None, 0);
-        let (a, _) = self.frame_pose(frame);
-        err.fixed_rows_mut::<3>(r)
-            .copy_from(&orientation_error(target, &a));
         Ok(())
     }
 
