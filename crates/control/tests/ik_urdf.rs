@@ -1,8 +1,11 @@
 //! `ik::Ik` on the Unitree G1 URDF: a reachable target is reached (checked by forward
 //! kinematics), and targets that ask to leave the joint ranges leave every joint inside its
 //! range with the margin and below its URDF velocity limit at every step, while the same
-//! tasks without limits do leave the ranges.
+//! tasks without limits do leave the ranges; with self-collision avoidance on, a posture that
+//! swings the arm into the torso leaves every segment pair apart (distances computed
+//! independently from the forward kinematics), while without it the arm enters the torso.
 
+use biped_control::avoidance::RepulsiveLaw;
 use biped_control::ik::{ClosedLoopIk, CycleInput, Ik, LimitSettings, Weight};
 use biped_dynamics::urdf::{load_file, UrdfModel, UrdfOptions};
 use biped_dynamics::{center_of_mass, update_placements, Data, Model};
@@ -146,7 +149,7 @@ fn a_foot_target_half_a_metre_away_keeps_every_joint_inside_its_limits() {
 }
 
 #[test]
-fn fixed_base_leg_stretched_past_its_reach_stays_in_range() {
+fn fixed_base_foot_asked_past_the_hip_range_stays_in_range() {
     // pelvis welded to the world: the left foot asked 0.5 m across, past the hip roll range
     let path = Robot::bundled("g1")
         .unwrap()
@@ -182,4 +185,59 @@ fn bad_names_and_steps_are_errors() {
     assert!(ik.step(&mut q, 0.0).is_err());
     assert!(ik.step(&mut DVector::zeros(3), 0.01).is_err());
     ik.step(&mut q, 0.01).unwrap();
+}
+
+/// Smallest distance over all checked segment pairs of the G1 at `q` (every pair computed).
+fn min_distance(robot: &Robot, q: &DVector<f64>) -> f64 {
+    let mut c = robot.collision.clone().unwrap();
+    let model = &robot.urdf.model;
+    let mut data = Data::new(model);
+    update_placements(model, &mut data, q).unwrap();
+    let poses: Vec<_> = c
+        .model_bodies
+        .iter()
+        .map(|b| data.body_pose(b.unwrap()))
+        .collect();
+    c.model.set_pair_query(biped_ssv::PairQuery::Closest);
+    c.model.update(&poses).unwrap();
+    c.model.min_distance().unwrap().1.result.distance
+}
+
+#[test]
+fn self_collision_avoidance_keeps_the_arm_off_the_torso() {
+    let robot = g1();
+    let q0 = robot.comfort.clone();
+    assert!(min_distance(&robot, &q0) > 0.0);
+    // a posture with the left arm swung in front of and into the torso
+    let mut arm_in = q0.clone();
+    for (n, v) in [
+        ("left_shoulder_roll_joint", -0.5),
+        ("left_elbow_joint", 1.2),
+        ("left_shoulder_pitch_joint", -0.3),
+    ] {
+        arm_in[robot.joint_index(n).unwrap().0] = v;
+    }
+    assert!(min_distance(&robot, &arm_in) < -0.05);
+    let worst = |avoid: bool| {
+        let mut ik = feet_and_com(&robot, &q0, Vector3::zeros());
+        ik.posture(&arm_in, 1e-2).unwrap();
+        if avoid {
+            let law = RepulsiveLaw::Blended { s0: 1.0, t: 0.5 };
+            ik.avoid_self_collision(robot.collision.clone().unwrap().model, law, 100.0)
+                .unwrap();
+        }
+        let mut q = q0.clone();
+        let mut worst = f64::INFINITY;
+        for _ in 0..1000 {
+            let report = ik.step(&mut q, 0.005).unwrap();
+            if !avoid {
+                assert_eq!(report.min_distance, None);
+            }
+            worst = worst.min(min_distance(&robot, &q));
+        }
+        worst
+    };
+    let (without, with) = (worst(false), worst(true));
+    assert!(without < -0.05, "without avoidance: {without}");
+    assert!(with > 0.0, "with avoidance: {with}");
 }

@@ -14,9 +14,12 @@ use super::limits::{JointLimits, JointRange, LimitSettings};
 use super::saturation::SaturationReport;
 use super::task_map::TaskMap;
 use super::weight::Weight;
+use crate::avoidance::{AvoidanceParams, CollisionAvoidance, RepulsiveLaw};
 use crate::error::IkError;
 use crate::tasks::{Frame, MomentumAxes, Task, TaskHandle, TaskKind, TaskStack};
 use biped_dynamics::urdf::UrdfModel;
+use biped_dynamics::{Data, Jacobians};
+use biped_ssv::CollisionModel;
 use nalgebra::{DVector, Isometry3, Matrix3, Vector3};
 
 /// Tuning of [`Ik::step`].
@@ -44,6 +47,20 @@ pub struct StepReport {
     pub error_norm: f64,
     /// Joints held at their limit box by the saturation.
     pub saturation: SaturationReport,
+    /// Smallest distance of a segment pair within the activation distance before the step
+    /// (`None` without self-collision avoidance or when no pair is that close).
+    pub min_distance: Option<f64>,
+}
+
+/// Self-collision avoidance of an [`Ik`]: the null-space gradient of the SSV distances (ch. 5)
+/// at the configuration of each step.
+#[derive(Debug, Clone)]
+struct Avoidance {
+    avoid: CollisionAvoidance,
+    gain: f64,
+    data: Data,
+    jac: Jacobians,
+    grad: DVector<f64>,
 }
 
 /// Differential IK on a URDF model with joint limits on (see the module docs).
@@ -55,6 +72,7 @@ pub struct Ik {
     limits: JointLimits,
     solver: Option<ClosedLoopIk>,
     weight: Weight,
+    avoidance: Option<Avoidance>,
     /// Step tuning.
     pub options: IkOptions,
 }
@@ -114,6 +132,7 @@ impl Ik {
             limits,
             solver: None,
             weight: Weight::Identity,
+            avoidance: None,
             options: IkOptions::default(),
         })
     }
@@ -272,6 +291,35 @@ impl Ik {
         Ok(())
     }
 
+    /// Keeps the robot's segments apart: each step adds `gain` times the gradient of the
+    /// repulsive potential `law` of the pairs of `collision` closer than its activation
+    /// distance (5.5)-(5.9) as null-space term (4.12). `collision` names its bodies after the
+    /// model's (as `biped ssv fit` writes them).
+    pub fn avoid_self_collision(
+        &mut self,
+        collision: CollisionModel,
+        law: RepulsiveLaw,
+        gain: f64,
+    ) -> Result<(), IkError> {
+        if !(gain > 0.0 && gain.is_finite()) {
+            return Err(IkError::InvalidParameter {
+                name: "avoidance gain",
+                reason: "must be finite and > 0",
+            });
+        }
+        let model = self.stack.model();
+        let avoid = CollisionAvoidance::new(model, collision, AvoidanceParams { law })
+            .map_err(|e| IkError::Kinematics(format!("self-collision avoidance: {e}")))?;
+        self.avoidance = Some(Avoidance {
+            avoid,
+            gain,
+            data: Data::new(model),
+            jac: Jacobians::new(model),
+            grad: DVector::zeros(model.nv()),
+        });
+        Ok(())
+    }
+
     /// One closed-loop cycle of length `dt`: the joint velocities that remove
     /// `error_fraction` of the task error, inside the joint limits, integrated into `q`.
     pub fn step(&mut self, q: &mut DVector<f64>, dt: f64) -> Result<StepReport, IkError> {
@@ -286,11 +334,23 @@ impl Ik {
         if self.solver.is_none() {
             self.solver = Some(ClosedLoopIk::with_limits(&self.stack, self.limits.clone())?);
         }
+        let mut min_distance = None;
+        if let Some(a) = &mut self.avoidance {
+            let model = self.stack.model();
+            let err = |e: String| IkError::Kinematics(format!("self-collision avoidance: {e}"));
+            a.jac
+                .compute(model, &mut a.data, q)
+                .map_err(|e| err(e.to_string()))?;
+            a.grad.fill(0.0);
+            let summary = (a.avoid.gradient(model, &a.data, &a.jac, &mut a.grad))
+                .map_err(|e| err(e.to_string()))?;
+            min_distance = summary.min_distance;
+        }
         let solver = self.solver.as_mut().ok_or(IkError::NotPositiveDefinite)?;
         let input = CycleInput {
             gain: f / dt,
             weight: &self.weight,
-            null_space: None,
+            null_space: self.avoidance.as_ref().map(|a| (&a.grad, a.gain)),
             damping: self.options.damping,
             dt,
         };
@@ -298,6 +358,7 @@ impl Ik {
         Ok(StepReport {
             error_norm: solver.tasks.error_norm(),
             saturation: solver.limits().map(|s| s.report()).unwrap_or_default(),
+            min_distance,
         })
     }
 
