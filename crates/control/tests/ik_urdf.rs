@@ -3,10 +3,14 @@
 //! range with the margin and below its URDF velocity limit at every step, while the same
 //! tasks without limits do leave the ranges; with self-collision avoidance on, a posture that
 //! swings the arm into the torso leaves every segment pair apart (distances computed
-//! independently from the forward kinematics), while without it the arm enters the torso.
+//! independently from the forward kinematics), while without it the arm enters the torso;
+//! and the arms' momentum compensation (7.3.2) cancels the vertical momentum of a leg swing.
 
 use biped_control::avoidance::RepulsiveLaw;
 use biped_control::ik::{ClosedLoopIk, CycleInput, Ik, LimitSettings, Weight};
+use biped_control::momentum::CompensationLaw;
+use biped_control::tasks::{TaskHandle, TaskKind};
+use biped_dynamics::centroidal_momentum;
 use biped_dynamics::urdf::{load_file, UrdfModel, UrdfOptions};
 use biped_dynamics::{center_of_mass, update_placements, Data, Model};
 use biped_robots::description::Robot;
@@ -240,4 +244,55 @@ fn self_collision_avoidance_keeps_the_arm_off_the_torso() {
     let (without, with) = (worst(false), worst(true));
     assert!(without < -0.05, "without avoidance: {without}");
     assert!(with > 0.0, "with avoidance: {with}");
+}
+
+/// Peak `|L_z|` (from `biped_dynamics::centroidal_momentum` at each step's `q` and `qdot`)
+/// while the left foot swings 0.1 m fore and aft at 1 Hz, the right foot and CoM held; with
+/// or without the arms' momentum compensation.
+fn peak_lz_of_a_leg_swing(robot: &Robot, compensate: bool) -> f64 {
+    let model = &robot.urdf.model;
+    let q0 = robot.comfort.clone();
+    let mut ik = feet_and_com(robot, &q0, Vector3::zeros());
+    // a light posture (task 3), so that the arms are nearly free of tasks (7.3.2: q_r = q_free)
+    ik.set_weight(TaskHandle(3), Some(1e-4)).unwrap();
+    if compensate {
+        let reducing: Vec<&str> = robot
+            .description
+            .reducing
+            .iter()
+            .map(|s| s.as_str())
+            .collect();
+        ik.compensate_momentum(&reducing, CompensationLaw::Exact)
+            .unwrap();
+        ik.set_momentum_target(0.0);
+    }
+    let start = pose(model, &q0, FEET[0]);
+    let (mut q, mut data, dt) = (q0.clone(), Data::new(model), 1e-3);
+    let mut peak = 0.0_f64;
+    for k in 0..1000 {
+        let x = 0.1 * (2.0 * std::f64::consts::PI * k as f64 * dt).sin();
+        let task = ik.task_mut(TaskHandle(0)).unwrap();
+        if let TaskKind::Pose { target, .. } = &mut task.kind {
+            target.translation.vector = start.translation.vector + Vector3::new(x, 0.0, 0.03);
+        }
+        ik.step(&mut q, dt).unwrap();
+        let qdot = ik.velocities().unwrap().clone();
+        let h = centroidal_momentum(model, &mut data, &q, &qdot).unwrap();
+        if k > 100 {
+            peak = peak.max(h.momentum.ang.z.abs());
+        }
+    }
+    peak
+}
+
+#[test]
+fn momentum_compensation_by_the_arms_cuts_the_vertical_momentum_of_a_leg_swing() {
+    let robot = g1();
+    let (without, with) = (
+        peak_lz_of_a_leg_swing(&robot, false),
+        peak_lz_of_a_leg_swing(&robot, true),
+    );
+    println!("peak |L_z|: {without} without, {with} with compensation");
+    assert!(without > 0.05, "the swing produces no momentum: {without}");
+    assert!(with < 0.1 * without, "compensation: {with} vs {without}");
 }

@@ -9,6 +9,9 @@
 //! Joints without a range (continuous) are not limited. Added tasks are hard (kept exactly
 //! while the limits allow) unless given a weight; [`Ik::posture`] is soft.
 
+mod add;
+mod null_space;
+
 use super::differential::{ClosedLoopIk, CycleInput};
 use super::limits::{JointLimits, JointRange, LimitSettings};
 use super::saturation::SaturationReport;
@@ -16,11 +19,13 @@ use super::task_map::TaskMap;
 use super::weight::Weight;
 use crate::avoidance::{AvoidanceParams, CollisionAvoidance, RepulsiveLaw};
 use crate::error::IkError;
-use crate::tasks::{Frame, MomentumAxes, Task, TaskHandle, TaskKind, TaskStack};
+use crate::momentum::{Compensation, CompensationLaw, VerticalMomentum};
+use crate::tasks::{Frame, Task, TaskHandle, TaskStack};
 use biped_dynamics::urdf::UrdfModel;
-use biped_dynamics::{Data, Jacobians};
+use biped_dynamics::Centroidal;
 use biped_ssv::CollisionModel;
-use nalgebra::{DVector, Isometry3, Matrix3, Vector3};
+use nalgebra::DVector;
+use null_space::{MomentumTerm, NullSpace};
 
 /// Tuning of [`Ik::step`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,17 +57,6 @@ pub struct StepReport {
     pub min_distance: Option<f64>,
 }
 
-/// Self-collision avoidance of an [`Ik`]: the null-space gradient of the SSV distances (ch. 5)
-/// at the configuration of each step.
-#[derive(Debug, Clone)]
-struct Avoidance {
-    avoid: CollisionAvoidance,
-    gain: f64,
-    data: Data,
-    jac: Jacobians,
-    grad: DVector<f64>,
-}
-
 /// Differential IK on a URDF model with joint limits on (see the module docs).
 #[derive(Debug, Clone)]
 pub struct Ik {
@@ -72,7 +66,7 @@ pub struct Ik {
     limits: JointLimits,
     solver: Option<ClosedLoopIk>,
     weight: Weight,
-    avoidance: Option<Avoidance>,
+    null_space: NullSpace,
     /// Step tuning.
     pub options: IkOptions,
 }
@@ -132,7 +126,7 @@ impl Ik {
             limits,
             solver: None,
             weight: Weight::Identity,
-            avoidance: None,
+            null_space: NullSpace::new(model),
             options: IkOptions::default(),
         })
     }
@@ -179,118 +173,6 @@ impl Ik {
         self.stack.push(task)
     }
 
-    /// Hard task: link `name`'s world pose at `target`.
-    pub fn frame_pose(
-        &mut self,
-        name: &str,
-        target: Isometry3<f64>,
-    ) -> Result<TaskHandle, IkError> {
-        let frame = self.frame(name)?;
-        self.add(Task::hard(TaskKind::Pose { frame, target }))
-    }
-
-    /// Hard task: link `name`'s world origin at `target`.
-    pub fn frame_position(
-        &mut self,
-        name: &str,
-        target: Vector3<f64>,
-    ) -> Result<TaskHandle, IkError> {
-        let frame = self.frame(name)?;
-        self.add(Task::hard(TaskKind::Position { frame, target }))
-    }
-
-    /// Hard task: link `name`'s world orientation at `target`.
-    pub fn frame_orientation(
-        &mut self,
-        name: &str,
-        target: Matrix3<f64>,
-    ) -> Result<TaskHandle, IkError> {
-        let frame = self.frame(name)?;
-        self.add(Task::hard(TaskKind::Orientation { frame, target }))
-    }
-
-    /// Hard task: link `name`'s origin at `target` in the frame of link `reference`.
-    pub fn relative_position(
-        &mut self,
-        name: &str,
-        reference: &str,
-        target: Vector3<f64>,
-    ) -> Result<TaskHandle, IkError> {
-        let (frame, reference) = (self.frame(name)?, self.frame(reference)?);
-        let kind = TaskKind::RelativePosition {
-            frame,
-            reference,
-            target,
-        };
-        self.add(Task::hard(kind))
-    }
-
-    /// Hard task: link `name`'s orientation relative to link `reference` at `target`.
-    pub fn relative_orientation(
-        &mut self,
-        name: &str,
-        reference: &str,
-        target: Matrix3<f64>,
-    ) -> Result<TaskHandle, IkError> {
-        let (frame, reference) = (self.frame(name)?, self.frame(reference)?);
-        let kind = TaskKind::RelativeOrientation {
-            frame,
-            reference,
-            target,
-        };
-        self.add(Task::hard(kind))
-    }
-
-    /// Hard task: the centre of mass at `target`.
-    pub fn com(&mut self, target: Vector3<f64>) -> Result<TaskHandle, IkError> {
-        self.add(Task::hard(TaskKind::Com { target }))
-    }
-
-    /// Soft task of weight `w`: every joint with a range towards its entry in `q0`.
-    pub fn posture(&mut self, q0: &DVector<f64>, w: f64) -> Result<TaskHandle, IkError> {
-        let joints = self
-            .limits
-            .ranges()
-            .iter()
-            .map(|r| (r.q_index, r.v_index))
-            .collect();
-        let kind = TaskKind::Posture {
-            joints,
-            target: q0.clone(),
-        };
-        self.add(Task::soft(kind, w))
-    }
-
-    /// Hard task: URDF joint `name` at `target`.
-    pub fn joint(&mut self, name: &str, target: f64) -> Result<TaskHandle, IkError> {
-        let (q_index, v_index) = self.joint_index(name)?;
-        self.add(Task::hard(TaskKind::Joint {
-            q_index,
-            v_index,
-            target,
-        }))
-    }
-
-    /// Hard task: the vertical angular momentum about the CoM `J_Lz v = lz` (7.3).
-    pub fn vertical_momentum(&mut self, lz: f64) -> Result<TaskHandle, IkError> {
-        self.add(Task::hard(TaskKind::AngularMomentum {
-            axes: MomentumAxes::Vertical,
-            target: Vector3::new(0.0, 0.0, lz),
-        }))
-    }
-
-    /// Makes task `h` soft with weight `w` (`None`: hard).
-    pub fn set_weight(&mut self, h: TaskHandle, w: Option<f64>) -> Result<(), IkError> {
-        if w.is_some_and(|w| !(w > 0.0 && w.is_finite())) {
-            return Err(IkError::InvalidParameter {
-                name: "task weight",
-                reason: "must be finite and > 0",
-            });
-        }
-        self.task_mut(h)?.weight = w;
-        Ok(())
-    }
-
     /// Keeps the robot's segments apart: each step adds `gain` times the gradient of the
     /// repulsive potential `law` of the pairs of `collision` closer than its activation
     /// distance (5.5)-(5.9) as null-space term (4.12). `collision` names its bodies after the
@@ -310,14 +192,36 @@ impl Ik {
         let model = self.stack.model();
         let avoid = CollisionAvoidance::new(model, collision, AvoidanceParams { law })
             .map_err(|e| IkError::Kinematics(format!("self-collision avoidance: {e}")))?;
-        self.avoidance = Some(Avoidance {
-            avoid,
-            gain,
-            data: Data::new(model),
-            jac: Jacobians::new(model),
-            grad: DVector::zeros(model.nv()),
+        self.null_space.avoidance = Some((avoid, gain));
+        Ok(())
+    }
+
+    /// Compensates the vertical angular momentum with the `reducing` joints (7.3.2): each step
+    /// adds their velocities `qdot_r` of (7.7) (`law` Exact) or (7.9) (Normalised) for the
+    /// producing joints' previous velocities to the null-space term (7.8), towards the target
+    /// of [`Self::set_momentum_target`] (default 0).
+    pub fn compensate_momentum(
+        &mut self,
+        reducing: &[&str],
+        law: CompensationLaw,
+    ) -> Result<(), IkError> {
+        let model = self.stack.model();
+        let comp = Compensation::new(model, reducing, law)
+            .map_err(|e| IkError::Kinematics(format!("momentum compensation: {e}")))?;
+        self.null_space.momentum = Some(MomentumTerm {
+            comp,
+            cen: Centroidal::new(model),
+            vm: VerticalMomentum::new(model),
+            target: 0.0,
         });
         Ok(())
+    }
+
+    /// The desired vertical angular momentum `L_d` of the compensation \[N m s].
+    pub fn set_momentum_target(&mut self, lz: f64) {
+        if let Some(m) = &mut self.null_space.momentum {
+            m.target = lz;
+        }
     }
 
     /// One closed-loop cycle of length `dt`: the joint velocities that remove
@@ -334,23 +238,16 @@ impl Ik {
         if self.solver.is_none() {
             self.solver = Some(ClosedLoopIk::with_limits(&self.stack, self.limits.clone())?);
         }
-        let mut min_distance = None;
-        if let Some(a) = &mut self.avoidance {
-            let model = self.stack.model();
-            let err = |e: String| IkError::Kinematics(format!("self-collision avoidance: {e}"));
-            a.jac
-                .compute(model, &mut a.data, q)
-                .map_err(|e| err(e.to_string()))?;
-            a.grad.fill(0.0);
-            let summary = (a.avoid.gradient(model, &a.data, &a.jac, &mut a.grad))
-                .map_err(|e| err(e.to_string()))?;
-            min_distance = summary.min_distance;
-        }
         let solver = self.solver.as_mut().ok_or(IkError::NotPositiveDefinite)?;
+        let model = self.stack.model();
+        let min_distance = self.null_space.evaluate(model, q, &solver.qdot)?;
         let input = CycleInput {
             gain: f / dt,
             weight: &self.weight,
-            null_space: self.avoidance.as_ref().map(|a| (&a.grad, a.gain)),
+            null_space: self
+                .null_space
+                .is_on()
+                .then_some((&self.null_space.grad, 1.0)),
             damping: self.options.damping,
             dt,
         };
