@@ -8,6 +8,41 @@
 //! below its `<limit velocity>` (or `LimitSettings::max_velocity` where the URDF gives none).
 //! Joints without a range (continuous) are not limited. Added tasks are hard (kept exactly
 //! while the limits allow) unless given a weight; [`Ik::posture`] is soft.
+//!
+//! Optional null-space terms (4.12), evaluated at each step's configuration: self-collision
+//! avoidance on an SSV model ([`Ik::avoid_self_collision`], ch. 5) and the vertical angular
+//! momentum compensation by named reducing joints ([`Ik::compensate_momentum`], 7.3.2).
+//!
+//! # Example
+//!
+//! The G1's left foot 5 cm up, the right foot held, with the URDF's limits kept:
+//!
+//! ```
+//! use biped_control::ik::Ik;
+//! use biped_dynamics::urdf::{load_file, UrdfOptions};
+//! use biped_dynamics::{update_placements, Data};
+//! use nalgebra::Translation3;
+//!
+//! let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../dynamics/data/g1_29dof_rev_1_0.urdf");
+//! let g1 = load_file(path, &UrdfOptions { floating: true, ..Default::default() })?;
+//! let mut ik = Ik::new(&g1)?;
+//! let mut q = g1.model.neutral();
+//! q[ik.joint_index("left_knee_joint")?.0] = 0.5; // bent: not singular for vertical motion
+//! let mut data = Data::new(&g1.model);
+//! update_placements(&g1.model, &mut data, &q)?;
+//! let pose = |data: &Data, link| data.body_pose(g1.model.body_id(link).unwrap());
+//! let target = Translation3::new(0.0, 0.0, 0.05) * pose(&data, "left_ankle_roll_link");
+//! ik.frame_pose("left_ankle_roll_link", target)?;
+//! ik.frame_pose("right_ankle_roll_link", pose(&data, "right_ankle_roll_link"))?;
+//! for _ in 0..100 {
+//!     ik.step(&mut q, 0.01)?;
+//! }
+//! update_placements(&g1.model, &mut data, &q)?;
+//! let moved = pose(&data, "left_ankle_roll_link").translation.vector - target.translation.vector;
+//! assert!(moved.norm() < 1e-6);
+//! assert!(ik.limits().min_margin(&q) >= ik.limits().settings().margin - 1e-9);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 mod add;
 mod null_space;
