@@ -296,3 +296,34 @@ fn momentum_compensation_by_the_arms_cuts_the_vertical_momentum_of_a_leg_swing()
     assert!(without > 0.05, "the swing produces no momentum: {without}");
     assert!(with < 0.1 * without, "compensation: {with} vs {without}");
 }
+
+#[test]
+fn comfort_moves_free_joints_in_the_null_space_without_disturbing_the_tasks() {
+    let robot = g1();
+    let model = &robot.urdf.model;
+    let q0 = robot.comfort.clone();
+    let mut ik = Ik::new(&robot.urdf).unwrap();
+    for f in FEET {
+        ik.frame_pose(f, pose(model, &q0, f)).unwrap();
+    }
+    ik.com(com(model, &q0)).unwrap();
+    let (elbow, _) = robot.joint_index("left_elbow_joint").unwrap();
+    let mut comfy = q0.clone();
+    comfy[elbow] = 1.0; // from 0.5
+    ik.comfort(&comfy, 5.0).unwrap();
+    assert!(ik.comfort(&DVector::zeros(3), 5.0).is_err());
+    let mut q = q0.clone();
+    for _ in 0..400 {
+        ik.step(&mut q, 0.01).unwrap();
+    }
+    // the elbow moves the CoM, so the others deviate a little: nearly, not exactly, at 1.0
+    assert!((q[elbow] - 1.0).abs() < 0.01, "elbow at {}", q[elbow]);
+    for f in FEET {
+        let (a, b) = (pose(model, &q0, f), pose(model, &q, f));
+        assert!(
+            (a.translation.vector - b.translation.vector).norm() < 1e-6,
+            "{f}"
+        );
+    }
+    assert!((com(model, &q) - com(model, &q0)).norm() < 1e-6);
+}

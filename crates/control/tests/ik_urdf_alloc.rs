@@ -25,7 +25,8 @@ fn ik_step_does_not_allocate() {
     let mut ik = Ik::new(&robot.urdf).unwrap();
     let left = pose("left_ankle_roll_link");
     ik.frame_pose("left_ankle_roll_link", left).unwrap();
-    ik.frame_pose("right_ankle_roll_link", pose("right_ankle_roll_link")).unwrap();
+    ik.frame_pose("right_ankle_roll_link", pose("right_ankle_roll_link"))
+        .unwrap();
     let com = center_of_mass(model, &mut Data::new(model), &q0, None).unwrap();
     ik.com(com.position).unwrap();
     let pelvis = pose("pelvis").rotation.to_rotation_matrix().into_inner();
@@ -34,7 +35,12 @@ fn ik_step_does_not_allocate() {
     let law = RepulsiveLaw::Blended { s0: 1.0, t: 0.5 };
     ik.avoid_self_collision(robot.collision.clone().unwrap().model, law, 10.0)
         .unwrap();
-    let reducing: Vec<&str> = robot.description.reducing.iter().map(String::as_str).collect();
+    let reducing: Vec<&str> = robot
+        .description
+        .reducing
+        .iter()
+        .map(String::as_str)
+        .collect();
     ik.compensate_momentum(&reducing, CompensationLaw::Normalised)
         .unwrap();
     let mut q = q0.clone();

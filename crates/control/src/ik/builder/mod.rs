@@ -9,9 +9,10 @@
 //! Joints without a range (continuous) are not limited. Added tasks are hard (kept exactly
 //! while the limits allow) unless given a weight; [`Ik::posture`] is soft.
 //!
-//! Optional null-space terms (4.12), evaluated at each step's configuration: self-collision
-//! avoidance on an SSV model ([`Ik::avoid_self_collision`], ch. 5) and the vertical angular
-//! momentum compensation by named reducing joints ([`Ik::compensate_momentum`], 7.3.2).
+//! Optional null-space terms (4.12), evaluated at each step's configuration: a comfort pose
+//! ([`Ik::comfort`], the comfort part of H_J), self-collision avoidance on an SSV model
+//! ([`Ik::avoid_self_collision`], ch. 5) and the vertical angular momentum compensation by
+//! named reducing joints ([`Ik::compensate_momentum`], 7.3.2).
 //!
 //! # Example
 //!
@@ -249,6 +250,25 @@ impl Ik {
             vm: VerticalMomentum::new(model),
             target: 0.0,
         });
+        Ok(())
+    }
+
+    /// Moves every joint with a range towards its entry in `q0` in the null space of the tasks
+    /// (the comfort part of H_J, Fig. 4.2): the gradient `gain (q - q0)` joins the null-space
+    /// term. Unlike [`Self::posture`] it adds no task rows (a smaller solve) and never competes
+    /// with the tasks.
+    pub fn comfort(&mut self, q0: &DVector<f64>, gain: f64) -> Result<(), IkError> {
+        crate::ik::linalg::check_dim("comfort pose", self.stack.nq(), q0.len())?;
+        if !(gain > 0.0 && gain.is_finite()) {
+            return Err(IkError::InvalidParameter {
+                name: "comfort gain",
+                reason: "must be finite and > 0",
+            });
+        }
+        let joints = (self.limits.ranges().iter())
+            .map(|r| (r.q_index, r.v_index))
+            .collect();
+        self.null_space.comfort = Some((joints, q0.clone(), gain));
         Ok(())
     }
 

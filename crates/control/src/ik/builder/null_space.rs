@@ -29,6 +29,8 @@ pub(super) struct NullSpace {
     pub avoidance: Option<(CollisionAvoidance, f64)>,
     /// Momentum compensation.
     pub momentum: Option<MomentumTerm>,
+    /// Comfort cost `gain / 2 sum (q_i - q0_i)^2` over the joints `(q_index, v_index)`.
+    pub comfort: Option<(Vec<(usize, usize)>, DVector<f64>, f64)>,
 }
 
 fn err(what: &str, e: impl std::fmt::Display) -> IkError {
@@ -44,12 +46,13 @@ impl NullSpace {
             grad: DVector::zeros(model.nv()),
             avoidance: None,
             momentum: None,
+            comfort: None,
         }
     }
 
     /// Whether any term is on.
     pub fn is_on(&self) -> bool {
-        self.avoidance.is_some() || self.momentum.is_some()
+        self.avoidance.is_some() || self.momentum.is_some() || self.comfort.is_some()
     }
 
     /// `y` at `q` (with the previous step's joint velocities `qdot_prev` for the producing
@@ -61,7 +64,12 @@ impl NullSpace {
         qdot_prev: &DVector<f64>,
     ) -> Result<Option<f64>, IkError> {
         self.grad.fill(0.0);
-        if !self.is_on() {
+        if let Some((joints, q0, gain)) = &self.comfort {
+            for &(qi, vi) in joints {
+                self.grad[vi] += gain * (q[qi] - q0[qi]);
+            }
+        }
+        if self.avoidance.is_none() && self.momentum.is_none() {
             return Ok(None);
         }
         let what = "null-space term";
