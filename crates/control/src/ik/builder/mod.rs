@@ -61,7 +61,7 @@ use biped_dynamics::urdf::UrdfModel;
 use biped_dynamics::Centroidal;
 use biped_ssv::CollisionModel;
 use nalgebra::DVector;
-use null_space::{MomentumTerm, NullSpace};
+use null_space::{ComfortTerm, MomentumTerm, NullSpace};
 
 /// Tuning of [`Ik::step`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -268,7 +268,11 @@ impl Ik {
         let joints = (self.limits.ranges().iter())
             .map(|r| (r.q_index, r.v_index))
             .collect();
-        self.null_space.comfort = Some((joints, q0.clone(), gain));
+        self.null_space.comfort = Some(ComfortTerm {
+            joints,
+            q0: q0.clone(),
+            gain,
+        });
         Ok(())
     }
 

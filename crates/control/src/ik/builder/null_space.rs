@@ -18,6 +18,14 @@ pub(super) struct MomentumTerm {
     pub target: f64,
 }
 
+/// Comfort cost `gain / 2 sum (q_i - q0_i)^2` over the joints `(q_index, v_index)`.
+#[derive(Debug, Clone)]
+pub(super) struct ComfortTerm {
+    pub joints: Vec<(usize, usize)>,
+    pub q0: DVector<f64>,
+    pub gain: f64,
+}
+
 /// Buffers and parts of the null-space term.
 #[derive(Debug, Clone)]
 pub(super) struct NullSpace {
@@ -29,8 +37,8 @@ pub(super) struct NullSpace {
     pub avoidance: Option<(CollisionAvoidance, f64)>,
     /// Momentum compensation.
     pub momentum: Option<MomentumTerm>,
-    /// Comfort cost `gain / 2 sum (q_i - q0_i)^2` over the joints `(q_index, v_index)`.
-    pub comfort: Option<(Vec<(usize, usize)>, DVector<f64>, f64)>,
+    /// Comfort pose.
+    pub comfort: Option<ComfortTerm>,
 }
 
 fn err(what: &str, e: impl std::fmt::Display) -> IkError {
@@ -64,9 +72,9 @@ impl NullSpace {
         qdot_prev: &DVector<f64>,
     ) -> Result<Option<f64>, IkError> {
         self.grad.fill(0.0);
-        if let Some((joints, q0, gain)) = &self.comfort {
-            for &(qi, vi) in joints {
-                self.grad[vi] += gain * (q[qi] - q0[qi]);
+        if let Some(c) = &self.comfort {
+            for &(qi, vi) in &c.joints {
+                self.grad[vi] += c.gain * (q[qi] - c.q0[qi]);
             }
         }
         if self.avoidance.is_none() && self.momentum.is_none() {
