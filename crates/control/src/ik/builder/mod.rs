@@ -53,15 +53,11 @@ use super::limits::{JointLimits, JointRange, LimitSettings};
 use super::saturation::SaturationReport;
 use super::task_map::TaskMap;
 use super::weight::Weight;
-use crate::avoidance::{AvoidanceParams, CollisionAvoidance, RepulsiveLaw};
 use crate::error::IkError;
-use crate::momentum::{Compensation, CompensationLaw, VerticalMomentum};
 use crate::tasks::{Frame, Task, TaskHandle, TaskStack};
 use biped_dynamics::urdf::UrdfModel;
-use biped_dynamics::Centroidal;
-use biped_ssv::CollisionModel;
 use nalgebra::DVector;
-use null_space::{ComfortTerm, MomentumTerm, NullSpace};
+use null_space::NullSpace;
 
 /// Tuning of [`Ik::step`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -207,80 +203,6 @@ impl Ik {
     pub fn add(&mut self, task: Task) -> Result<TaskHandle, IkError> {
         self.solver = None;
         self.stack.push(task)
-    }
-
-    /// Keeps the robot's segments apart: each step adds `gain` times the gradient of the
-    /// repulsive potential `law` of the pairs of `collision` closer than its activation
-    /// distance (5.5)-(5.9) as null-space term (4.12). `collision` names its bodies after the
-    /// model's (as `biped ssv fit` writes them).
-    pub fn avoid_self_collision(
-        &mut self,
-        collision: CollisionModel,
-        law: RepulsiveLaw,
-        gain: f64,
-    ) -> Result<(), IkError> {
-        if !(gain > 0.0 && gain.is_finite()) {
-            return Err(IkError::InvalidParameter {
-                name: "avoidance gain",
-                reason: "must be finite and > 0",
-            });
-        }
-        let model = self.stack.model();
-        let avoid = CollisionAvoidance::new(model, collision, AvoidanceParams { law })
-            .map_err(|e| IkError::Kinematics(format!("self-collision avoidance: {e}")))?;
-        self.null_space.avoidance = Some((avoid, gain));
-        Ok(())
-    }
-
-    /// Compensates the vertical angular momentum with the `reducing` joints (7.3.2): each step
-    /// adds their velocities `qdot_r` of (7.7) (`law` Exact) or (7.9) (Normalised) for the
-    /// producing joints' previous velocities to the null-space term (7.8), towards the target
-    /// of [`Self::set_momentum_target`] (default 0).
-    pub fn compensate_momentum(
-        &mut self,
-        reducing: &[&str],
-        law: CompensationLaw,
-    ) -> Result<(), IkError> {
-        let model = self.stack.model();
-        let comp = Compensation::new(model, reducing, law)
-            .map_err(|e| IkError::Kinematics(format!("momentum compensation: {e}")))?;
-        self.null_space.momentum = Some(MomentumTerm {
-            comp,
-            cen: Centroidal::new(model),
-            vm: VerticalMomentum::new(model),
-            target: 0.0,
-        });
-        Ok(())
-    }
-
-    /// Moves every joint with a range towards its entry in `q0` in the null space of the tasks
-    /// (the comfort part of H_J, Fig. 4.2): the gradient `gain (q - q0)` joins the null-space
-    /// term. Unlike [`Self::posture`] it adds no task rows (a smaller solve) and never competes
-    /// with the tasks.
-    pub fn comfort(&mut self, q0: &DVector<f64>, gain: f64) -> Result<(), IkError> {
-        crate::ik::linalg::check_dim("comfort pose", self.stack.nq(), q0.len())?;
-        if !(gain > 0.0 && gain.is_finite()) {
-            return Err(IkError::InvalidParameter {
-                name: "comfort gain",
-                reason: "must be finite and > 0",
-            });
-        }
-        let joints = (self.limits.ranges().iter())
-            .map(|r| (r.q_index, r.v_index))
-            .collect();
-        self.null_space.comfort = Some(ComfortTerm {
-            joints,
-            q0: q0.clone(),
-            gain,
-        });
-        Ok(())
-    }
-
-    /// The desired vertical angular momentum `L_d` of the compensation \[N m s].
-    pub fn set_momentum_target(&mut self, lz: f64) {
-        if let Some(m) = &mut self.null_space.momentum {
-            m.target = lz;
-        }
     }
 
     /// One closed-loop cycle of length `dt`: the joint velocities that remove
