@@ -5,8 +5,13 @@
 //! Jacobian at `q`): Newton-Raphson and line-search optimisation for a pose
 //! ([`ik::PositionIk`]), and resolved motion rate control with a weighted generalized inverse
 //! and a null-space term for 1 kHz tracking ([`ik::ClosedLoopIk`], [`ik::Rmrc`]).
-//! [`tasks::LolaTasks`] is the task set of the Lola-like biped of `biped_robots` (feet, CoG,
-//! upper body, arm CoGs, single joints, each switchable). [`walk`] puts everything together: a
+//! [`tasks::TaskStack`] stacks generic tasks on any model (frame pose / position / orientation,
+//! relative frame, CoM, posture, joint, angular momentum), and [`ik::Ik`] runs it on a URDF
+//! model by link and joint names with the URDF's joint position and velocity limits kept by
+//! default. [`tasks::LolaTasks`] is the task set of the Lola-like biped of `biped_robots` (feet,
+//! CoG, upper body, arm CoGs, single joints, each switchable): its feet relative to the CoG in
+//! the planning frame and its arm-subtree CoGs are Lola's own, so it stays a task set of its
+//! own (the allocation-free fast path of the walk); its other rows equal the generic tasks'. [`walk`] puts everything together: a
 //! walking pattern ([`pattern`]) tracked by the IK with self-collision avoidance
 //! ([`avoidance`]) and one of the thesis's methods for the vertical angular momentum
 //! ([`momentum`]), evaluated cycle by cycle ([`walk::run_walk`]), and optionally in the
@@ -49,14 +54,16 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
-//! IK on a URDF robot (the Unitree G1 of `biped_dynamics`) with a task map of one's own:
-//! `cargo run -p biped_control --example g1_ik`.
+//! IK on a URDF robot (the Unitree G1 of `biped_dynamics`) with [`ik::Ik`] in a few lines:
+//! `cargo run --release --example urdf_ik` (in the repository's `examples/`); with a task map
+//! of one's own: `cargo run -p biped_control --example g1_ik`.
 //!
 //! # Modules
 //!
-//! - [`ik`]: position IK, RMRC, closed-loop and acceleration-level IK, joint-limit cost, task
-//!   blending, orientation errors.
-//! - [`tasks`]: Lola's task description (Table 4.2) with switchable tasks.
+//! - [`ik`]: position IK, RMRC, closed-loop and acceleration-level IK, hard joint limits,
+//!   joint-limit cost, task blending, orientation errors, and the URDF IK builder [`ik::Ik`].
+//! - [`tasks`]: generic tasks on any model ([`tasks::TaskStack`]) and Lola's task description
+//!   (Table 4.2) with switchable tasks.
 //! - [`avoidance`]: self-collision avoidance from SSV distances (ch. 5).
 //! - [`momentum`]: vertical angular momentum compensation and minimisation (ch. 7).
 //! - [`pattern`]: walking pattern generation (footsteps, CoM by ZMP preview control, swing

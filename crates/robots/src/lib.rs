@@ -46,9 +46,12 @@
 //!
 //! # Modules
 //!
+//! - [`description`]: robot description files (TOML) that make any URDF humanoid a walking
+//!   robot: feet, joint groups, momentum DoFs, comfort pose, collision model, drives.
 //! - [`lola`]: the Lola-like biped: parameters, model assembly, collision model, sparsity.
 //! - [`calibration`]: encoder offsets from jig poses (Levenberg-Marquardt), encoder counts of
 //!   the knee and ankle drives.
 
 pub mod calibration;
+pub mod description;
 pub mod lola;

@@ -63,6 +63,8 @@ impl Default for LimitSettings {
 pub struct JointLimits {
     ranges: Vec<JointRange>,
     settings: LimitSettings,
+    /// Velocity limit of every range (same order): `settings.max_velocity` unless set per joint.
+    velocity: Vec<f64>,
 }
 
 impl JointLimits {
@@ -89,7 +91,39 @@ impl JointLimits {
                 reason: "every range must be finite and wider than twice the margin",
             });
         }
-        Ok(Self { ranges, settings })
+        let velocity = vec![s.max_velocity; ranges.len()];
+        Ok(Self {
+            ranges,
+            settings,
+            velocity,
+        })
+    }
+
+    /// The same limits with a velocity limit of its own for the joints listed as
+    /// `(v_index, v_max)` (e.g. a URDF's `<limit velocity>`); the others keep
+    /// `settings.max_velocity`. Errors on a limit that is not finite and positive or a
+    /// `v_index` without a range.
+    pub fn with_velocities(mut self, limits: &[(usize, f64)]) -> Result<Self, IkError> {
+        for &(v_index, v_max) in limits {
+            if !(v_max > 0.0 && v_max.is_finite()) {
+                return Err(IkError::InvalidParameter {
+                    name: "joint velocity limit",
+                    reason: "must be finite and > 0",
+                });
+            }
+            let k = self.ranges.iter().position(|r| r.v_index == v_index);
+            let k = k.ok_or(IkError::InvalidParameter {
+                name: "joint velocity limit",
+                reason: "names a v index without a joint range",
+            })?;
+            self.velocity[k] = v_max;
+        }
+        Ok(self)
+    }
+
+    /// Velocity limit of every range, in [`Self::ranges`] order.
+    pub fn velocity_limits(&self) -> &[f64] {
+        &self.velocity
     }
 
     /// The joints.
@@ -102,16 +136,17 @@ impl JointLimits {
         &self.settings
     }
 
-    /// Largest speed towards a bound `d >= 0` away (negative beyond it) for steps `dt`.
-    fn admissible(&self, d: f64, dt: f64) -> f64 {
+    /// Largest speed towards a bound `d >= 0` away (negative beyond it) for steps `dt`, for a
+    /// joint with velocity limit `v_max`.
+    fn admissible(&self, d: f64, dt: f64, v_max: f64) -> f64 {
         let s = &self.settings;
         let adt = s.max_deceleration * dt;
         if d >= 0.0 {
-            s.max_velocity
+            v_max
                 .min(0.5 * ((adt * adt + 8.0 * s.max_deceleration * d).sqrt() - adt))
                 .min(d / dt)
         } else {
-            (s.recovery_rate * d).max(-s.max_velocity)
+            (s.recovery_rate * d).max(-v_max)
         }
     }
 
@@ -127,10 +162,10 @@ impl JointLimits {
         lo.fill(f64::NEG_INFINITY);
         hi.fill(f64::INFINITY);
         let m = self.settings.margin;
-        for r in &self.ranges {
+        for (r, &v_max) in self.ranges.iter().zip(&self.velocity) {
             let x = q[r.q_index];
-            let up = self.admissible(r.upper - m - x, dt);
-            let down = -self.admissible(x - r.lower - m, dt);
+            let up = self.admissible(r.upper - m - x, dt, v_max);
+            let down = -self.admissible(x - r.lower - m, dt, v_max);
             // both bands cannot be violated at once (range > 2 margin); keep lo <= hi
             lo[r.v_index] = down.min(up);
             hi[r.v_index] = up.max(down);

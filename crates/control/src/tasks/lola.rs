@@ -15,12 +15,13 @@
 //! Inactive tasks (activation weight 0) are left out of the stack; blended tasks get the
 //! row softness of [`crate::ik::blend`].
 
+use super::rows::{com_jacobian_from_ag, put_rows};
 use super::targets::{FootFrame, LolaTargets, TaskId};
 use crate::error::IkError;
 use crate::ik::blend::Activation;
 use crate::ik::orientation::orientation_error;
 use crate::ik::TaskMap;
-use biped_dynamics::{Centroidal, Data, JacobianFrame, Jacobians, JointModel, Model};
+use biped_dynamics::{Centroidal, Data, JacobianFrame, Jacobians, Model};
 use biped_robots::lola::LolaModel;
 use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Vector3};
 
@@ -352,64 +353,13 @@ impl TaskMap for LolaTasks {
         step: f64,
         out: &mut DVector<f64>,
     ) -> Result<(), IkError> {
-        crate::ik::linalg::check_dim("retract q", self.model.nq(), q.len())?;
-        crate::ik::linalg::check_dim("retract v", self.model.nv(), v.len())?;
-        crate::ik::linalg::check_dim("retract output", q.len(), out.len())?;
-        out.copy_from(q);
-        for b in self.model.bodies().iter().filter(|b| b.owns_coordinates()) {
-            let (qi, vi) = (b.q_index(), b.v_index());
-            match b.joint() {
-                JointModel::FreeQuaternion => super::se3::integrate_free(q, v, qi, vi, step, out),
-                jm => {
-                    for c in 0..jm.nv() {
-                        out[qi + c] += v[vi + c] * step;
-                    }
-                }
-            }
-        }
-        crate::ik::linalg::check_finite("retract output", out.as_slice())
+        super::retract::retract_configuration(&self.model, q, v, step, out)
     }
 }
 
 /// Rotation of the planning frame: yaw about the inertial vertical.
 fn planning_rotation(yaw: f64) -> Matrix3<f64> {
     Rotation3::from_axis_angle(&Vector3::z_axis(), yaw).into_inner()
-}
-
-/// `J_C` (3 x nv) from the centroidal momentum matrix `A_G = [J_L; m J_C]`.
-fn com_jacobian_from_ag(ag: &DMatrix<f64>, mass: f64, jc: &mut DMatrix<f64>) {
-    let inv = 1.0 / mass;
-    for (dst, col) in jc
-        .as_mut_slice()
-        .chunks_exact_mut(3)
-        .zip(ag.as_slice().chunks_exact(6))
-    {
-        for r in 0..3 {
-            dst[r] = col[3 + r] * inv;
-        }
-    }
-}
-
-/// `out[r..r+3, :] = rot * (a[ra..ra+3, :] - b[rb..rb+3, :])` (b optional).
-fn put_rows(
-    out: &mut DMatrix<f64>,
-    r: usize,
-    rot: &Matrix3<f64>,
-    a: &DMatrix<f64>,
-    ra: usize,
-    b: Option<&DMatrix<f64>>,
-    rb: usize,
-) {
-    for c in 0..a.ncols() {
-        let mut v = Vector3::new(a[(ra, c)], a[(ra + 1, c)], a[(ra + 2, c)]);
-        if let Some(b) = b {
-            v -= Vector3::new(b[(rb, c)], b[(rb + 1, c)], b[(rb + 2, c)]);
-        }
-        let w = rot * v;
-        for i in 0..3 {
-            out[(r + i, c)] = w[i];
-        }
-    }
 }
 
 /// Bodies of the subtree of `root` with their CoM (body frame) and mass (massless skipped).

@@ -1,4 +1,10 @@
-//! Lola's task-space description (thesis 4.5, Table 4.2) with switchable, blended tasks (5.1).
+//! Task-space descriptions (thesis 4.5): generic tasks on any model, and Lola's task set
+//! (Table 4.2) with switchable, blended tasks (5.1).
+//!
+//! [`TaskStack`] stacks generic [`Task`]s (frame pose / position / orientation, relative
+//! frame, CoM, posture, joint, angular momentum; see [`task`]) on any
+//! [`biped_dynamics::Model`] and implements [`crate::ik::TaskMap`]; [`crate::ik::Ik`] builds
+//! one from URDF names with the joint limits on.
 //!
 //! [`LolaTasks`] stacks the active tasks of [`TaskId`] (Table 4.2 plus joint tasks for the
 //! head pan/tilt and camera vergence, so that all tasks together are non-redundant:
@@ -7,9 +13,15 @@
 
 mod lola;
 mod pose;
+mod retract;
+mod rows;
 mod se3;
+mod stack;
 mod targets;
+pub mod task;
 
 pub use lola::LolaTasks;
 pub use pose::{lola_joint_cost, standing_configuration};
+pub use stack::{TaskHandle, TaskStack};
 pub use targets::{FootFrame, LolaTargets, TaskId};
+pub use task::{Frame, MomentumAxes, Task, TaskKind};

@@ -1,0 +1,301 @@
+//! [`TaskStack`]: a list of generic [`Task`]s on any model, stacked in order into one
+//! [`TaskMap`] (one kinematics pass, one centroidal pass when a CoM or momentum task needs it,
+//! no allocation per evaluation).
+
+mod frames;
+
+use super::rows::{com_jacobian_from_ag, put_rows};
+use super::task::{Frame, MomentumAxes, Task, TaskKind};
+use crate::error::IkError;
+use crate::ik::TaskMap;
+use biped_dynamics::{Centroidal, Data, JacobianError, Jacobians, Model};
+use nalgebra::{DMatrix, DVector, Matrix3};
+
+/// Index of a task in its [`TaskStack`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct TaskHandle(pub usize);
+
+/// Generic tasks stacked in insertion order; implements [`TaskMap`].
+#[derive(Debug, Clone)]
+pub struct TaskStack {
+    model: Model,
+    data: Data,
+    jac: Jacobians,
+    cen: Centroidal,
+    tasks: Vec<Task>,
+    rows: usize,
+    jc: DMatrix<f64>,
+    jl: DMatrix<f64>,
+    j3: DMatrix<f64>,
+    j3r: DMatrix<f64>,
+    j6: DMatrix<f64>,
+    j6r: DMatrix<f64>,
+    soft: Vec<f64>,
+    ff: DVector<f64>,
+}
+
+fn kin(e: JacobianError) -> IkError {
+    IkError::Kinematics(e.to_string())
+}
+
+impl TaskStack {
+    /// An empty stack on `model`.
+    pub fn new(model: &Model) -> Self {
+        let nv = model.nv();
+        Self {
+            data: Data::new(model),
+            jac: Jacobians::new(model),
+            cen: Centroidal::new(model),
+            tasks: Vec::new(),
+            rows: 0,
+            jc: DMatrix::zeros(3, nv),
+            jl: DMatrix::zeros(3, nv),
+            j3: DMatrix::zeros(3, nv),
+            j3r: DMatrix::zeros(3, nv),
+            j6: DMatrix::zeros(6, nv),
+            j6r: DMatrix::zeros(6, nv),
+            soft: Vec::new(),
+            ff: DVector::zeros(0),
+            model: model.clone(),
+        }
+    }
+
+    /// The model.
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// Kinematics of the last evaluation: body poses and Jacobian columns.
+    pub fn kinematics(&self) -> (&Data, &Jacobians) {
+        (&self.data, &self.jac)
+    }
+
+    /// Centroidal quantities of the last evaluation (only computed when a CoM or momentum task
+    /// is in the stack).
+    pub fn centroidal(&self) -> &Centroidal {
+        &self.cen
+    }
+
+    /// The tasks, in stacking order.
+    pub fn tasks(&self) -> &[Task] {
+        &self.tasks
+    }
+
+    /// Task `h` (to read or change its target, weight or velocity).
+    pub fn task_mut(&mut self, h: TaskHandle) -> Option<&mut Task> {
+        self.tasks.get_mut(h.0)
+    }
+
+    /// Appends `task` after checking its indices and weight against the model.
+    pub fn push(&mut self, task: Task) -> Result<TaskHandle, IkError> {
+        self.check(&task)?;
+        self.rows += task.kind.dim();
+        self.tasks.push(task);
+        self.soft.resize(self.rows, 0.0);
+        self.ff = DVector::zeros(self.rows);
+        Ok(TaskHandle(self.tasks.len() - 1))
+    }
+
+    /// Errors on body, q or v indices outside the model, a posture target of the wrong length
+    /// or a weight that is not finite and positive.
+    fn check(&self, task: &Task) -> Result<(), IkError> {
+        let bad = |name, reason| Err(IkError::InvalidParameter { name, reason });
+        if task.weight.is_some_and(|w| !(w > 0.0 && w.is_finite())) {
+            return bad("task weight", "must be finite and > 0");
+        }
+        let (nb, nq, nv) = (self.model.nbodies(), self.model.nq(), self.model.nv());
+        let frame_ok = |f: &Frame| f.body < nb;
+        let ok = match &task.kind {
+            TaskKind::Position { frame, .. }
+            | TaskKind::Orientation { frame, .. }
+            | TaskKind::Pose { frame, .. } => frame_ok(frame),
+            TaskKind::RelativePosition {
+                frame, reference, ..
+            }
+            | TaskKind::RelativeOrientation {
+                frame, reference, ..
+            } => frame_ok(frame) && frame_ok(reference),
+            TaskKind::Posture { joints, target } => {
+                target.len() == nq && joints.iter().all(|&(qi, vi)| qi < nq && vi < nv)
+            }
+            TaskKind::Joint {
+                q_index, v_index, ..
+            } => *q_index < nq && *v_index < nv,
+            TaskKind::Com { .. } | TaskKind::AngularMomentum { .. } => true,
+        };
+        if ok {
+            Ok(())
+        } else {
+            bad(
+                "task",
+                "body, joint index or target length does not fit the model",
+            )
+        }
+    }
+
+    /// Error and Jacobian rows of task `k` from row `r`.
+    fn write_task(
+        &mut self,
+        k: usize,
+        q: &DVector<f64>,
+        r: usize,
+        err: &mut DVector<f64>,
+        out: &mut DMatrix<f64>,
+    ) -> Result<(), IkError> {
+        let id = Matrix3::identity();
+        let kind = &self.tasks[k].kind;
+        match kind {
+            TaskKind::Position { frame, target } => {
+                let (frame, target) = (*frame, *target);
+                self.write_position(&frame, &target, r, err, out)?;
+            }
+            TaskKind::Orientation { frame, target } => {
+                let (frame, target) = (*frame, *target);
+                self.write_orientation(&frame, &target, r, err, out)?;
+            }
+            TaskKind::Pose { frame, target } => {
+                let (frame, target) = (*frame, *target);
+                let rot = target.rotation.to_rotation_matrix().into_inner();
+                self.write_position(&frame, &target.translation.vector, r, err, out)?;
+                self.write_orientation(&frame, &rot, r + 3, err, out)?;
+            }
+            TaskKind::RelativePosition {
+                frame,
+                reference,
+                target,
+            } => {
+                let (frame, reference, target) = (*frame, *reference, *target);
+                self.write_relative_position(&frame, &reference, &target, r, err, out)?;
+            }
+            TaskKind::RelativeOrientation {
+                frame,
+                reference,
+                target,
+            } => {
+                let (frame, reference, target) = (*frame, *reference, *target);
+                self.write_relative_orientation(&frame, &reference, &target, r, err, out)?;
+            }
+            TaskKind::Com { target } => {
+                put_rows(out, r, &id, &self.jc, 0, None, 0);
+                err.fixed_rows_mut::<3>(r)
+                    .copy_from(&(target - self.cen.com()));
+            }
+            TaskKind::Posture { joints, target } => {
+                for (i, &(qi, vi)) in joints.iter().enumerate() {
+                    out.row_mut(r + i).fill(0.0);
+                    out[(r + i, vi)] = 1.0;
+                    err[r + i] = target[qi] - q[qi];
+                }
+            }
+            TaskKind::Joint {
+                q_index,
+                v_index,
+                target,
+            } => {
+                out.row_mut(r).fill(0.0);
+                out[(r, *v_index)] = 1.0;
+                err[r] = target - q[*q_index];
+            }
+            TaskKind::AngularMomentum { axes, .. } => {
+                let rows = match axes {
+                    MomentumAxes::Vertical => 2..3,
+                    MomentumAxes::All => 0..3,
+                };
+                for (i, row) in rows.enumerate() {
+                    out.row_mut(r + i).copy_from(&self.jl.row(row));
+                    err[r + i] = 0.0;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Feed-forward velocity and softness of task `k`'s rows from row `r`.
+    fn write_velocity(&mut self, k: usize, r: usize) {
+        let task = &self.tasks[k];
+        let c = task.weight.map_or(0.0, |w| 1.0 / w);
+        for i in 0..task.kind.dim() {
+            self.soft[r + i] = c;
+            self.ff[r + i] = match &task.kind {
+                TaskKind::Posture { .. } => 0.0,
+                TaskKind::AngularMomentum { axes, target } => {
+                    let l = match axes {
+                        MomentumAxes::Vertical => target.z,
+                        MomentumAxes::All => target[i],
+                    };
+                    l + task.velocity[i]
+                }
+                _ => task.velocity[i],
+            };
+        }
+    }
+}
+
+impl TaskMap for TaskStack {
+    fn nq(&self) -> usize {
+        self.model.nq()
+    }
+
+    fn nv(&self) -> usize {
+        self.model.nv()
+    }
+
+    fn max_rows(&self) -> usize {
+        self.rows
+    }
+
+    /// Stacks the tasks in insertion order.
+    fn error_and_jacobian(
+        &mut self,
+        q: &DVector<f64>,
+        err: &mut DVector<f64>,
+        jac: &mut DMatrix<f64>,
+    ) -> Result<usize, IkError> {
+        let (rows, nv) = (self.rows, self.model.nv());
+        if err.len() < rows || jac.nrows() < rows || jac.ncols() != nv {
+            return Err(IkError::Dimension {
+                what: "task buffers (rows)",
+                expected: rows,
+                got: err.len().min(jac.nrows()),
+            });
+        }
+        self.jac
+            .compute(&self.model, &mut self.data, q)
+            .map_err(kin)?;
+        if self.tasks.iter().any(|t| t.kind.needs_centroidal()) {
+            self.cen
+                .compute_matrix_with(&self.model, &self.data, &self.jac)
+                .map_err(kin)?;
+            let ag = self.cen.ag().map_err(kin)?;
+            com_jacobian_from_ag(ag, self.cen.mass(), &mut self.jc);
+            self.cen
+                .angular_momentum_jacobian(&mut self.jl)
+                .map_err(kin)?;
+        }
+        let mut r = 0;
+        for k in 0..self.tasks.len() {
+            self.write_task(k, q, r, err, jac)?;
+            self.write_velocity(k, r);
+            r += self.tasks[k].kind.dim();
+        }
+        Ok(r)
+    }
+
+    fn feedforward(&self, out: &mut DVector<f64>) {
+        out.rows_mut(0, self.rows).copy_from(&self.ff);
+    }
+
+    fn softness(&self) -> Option<&[f64]> {
+        Some(&self.soft)
+    }
+
+    fn retract(
+        &self,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        step: f64,
+        out: &mut DVector<f64>,
+    ) -> Result<(), IkError> {
+        super::retract::retract_configuration(&self.model, q, v, step, out)
+    }
+}
