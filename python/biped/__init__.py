@@ -1,6 +1,7 @@
 """Multibody dynamics, centroidal quantities and swept-sphere distances for biped robots.
 
-``Model`` loads a robot (URDF, the Lola-like biped, Dill(n)) and computes forward and inverse
+``Ik`` is the whole-body IK on a URDF (frame, CoM, posture and joint tasks, the URDF's joint
+limits kept). ``Model`` loads a robot (URDF, the Lola-like biped, Dill(n)) and computes forward and inverse
 dynamics, mass matrices, frame poses and Jacobians, the centre of mass and centroidal
 momentum, for one state (1-D arrays) or a batch (2-D arrays, one row per state, computed in
 parallel). ``biped.ssv`` holds the swept-sphere distances. ``simulate``, ``simulate_batch``
@@ -10,8 +11,8 @@ simulations as Ray tasks. Invalid input raises
 ``BipedError`` (a ``ValueError``); unreadable files raise ``OSError``.
 """
 
-from ._native import BipedError, Model
+from ._native import BipedError, Ik, Model
 from . import ssv
 from .run import simulate, simulate_batch, walk, walk_batch
 
-__all__ = ["BipedError", "Model", "simulate", "simulate_batch", "ssv", "walk", "walk_batch"]
+__all__ = ["BipedError", "Ik", "Model", "simulate", "simulate_batch", "ssv", "walk", "walk_batch"]

@@ -128,6 +128,32 @@ class Model:
     def centroidal_jacobian(self, q: ArrayLike, threads: Optional[int] = None) -> Array:
         """Angular-momentum Jacobian ``J_L`` (3 x nv, ``L_G = J_L v``): the top rows of ``A_G``."""
 
+class Ik:
+    """Whole-body differential IK on a URDF (``biped_control::ik::Ik``): hard frame, CoM and
+    joint tasks and a soft posture by name; the URDF's joint position (0.01 rad margin) and
+    velocity limits are kept by every step. Task methods return a handle for ``set_target``."""
+
+    def __init__(self, path: Union[str, PathLike], floating: bool = True) -> None: ...
+    @property
+    def nq(self) -> int:
+        """Length of ``q``."""
+    def frame_pose(self, link: str, pose: ArrayLike) -> int:
+        """Link ``link``'s frame to the world pose ``pose`` (4x4)."""
+    def frame_position(self, link: str, position: ArrayLike) -> int:
+        """Link ``link``'s origin to the world point ``position``."""
+    def frame_orientation(self, link: str, rotation: ArrayLike) -> int:
+        """Link ``link``'s orientation to the world rotation ``rotation`` (3x3)."""
+    def com(self, position: ArrayLike) -> int:
+        """The centre of mass to ``position``."""
+    def posture(self, q: ArrayLike, weight: float) -> int:
+        """Soft task: every limited joint towards ``q``."""
+    def joint(self, name: str, target: float) -> int:
+        """Joint ``name`` to ``target``."""
+    def set_target(self, task: int, target: ArrayLike) -> None:
+        """Moves task ``task``'s target (same kind of value as when it was made)."""
+    def step(self, q: ArrayLike, dt: float) -> Tuple[Array, Dict[str, float]]:
+        """One step: the new ``q`` and ``{error_norm, joints_at_limits, min_limit_margin}``."""
+
 class CollisionModel:
     """A collision model from a TOML file (``crates/ssv`` format), moved to body poses."""
 

@@ -6,6 +6,7 @@
 
 mod batch;
 mod error;
+mod ik;
 mod kernels;
 mod model;
 mod run;
@@ -18,6 +19,7 @@ use pyo3::prelude::*;
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("BipedError", m.py().get_type::<error::BipedError>())?;
     m.add_class::<model::PyModel>()?;
+    m.add_class::<ik::PyIk>()?;
     ssv::register(m)?;
     run::register(m)?;
     Ok(())

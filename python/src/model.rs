@@ -114,7 +114,7 @@ impl PyModel {
 }
 
 /// The URDF error as a Python exception: `OSError` (subclass) if the file cannot be read.
-fn urdf_error(e: UrdfError) -> PyErr {
+pub(crate) fn urdf_error(e: UrdfError) -> PyErr {
     match &e {
         UrdfError::Io { source, .. } => match source.kind() {
             std::io::ErrorKind::NotFound => PyFileNotFoundError::new_err(e.to_string()),

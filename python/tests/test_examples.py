@@ -16,11 +16,11 @@ def _run(name, *args):
     return done.stdout
 
 
-def test_ik_urdf_reaches_the_targets_inside_the_ranges():
+def test_ik_urdf_reaches_the_target_inside_the_ranges():
     out = _run("ik_urdf.py")
-    assert "inside the joint ranges: True" in out
-    error_mm = float(out.split("hand error ")[1].split(" mm")[0])
-    assert error_mm < 0.2
+    miss = float(out.split("left foot ")[1].split(" m ")[0])
+    margin = float(out.split("margin ")[1].split(" rad")[0])
+    assert miss < 1e-6 and margin >= 0.01 - 1e-9
 
 
 def test_stand_gain_sweep():
