@@ -131,6 +131,7 @@ fn dynamic_walk_writes_csv_plots_and_summary_entry() {
         assert!(header.contains(col), "{header}");
     }
     assert!(csv.lines().count() > 3000);
+    check_flight(&csv, d, &stdout);
     for svg in [
         "dynamic_base.svg",
         "dynamic_tilt.svg",
@@ -159,4 +160,39 @@ fn open_loop_dynamic_walk_falls_with_one_line_error() {
     assert!(v["dynamic"]["fell_at"].as_f64().is_some());
     assert!(dir.join("dynamic.csv").exists());
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The flight figures of the summary recomputed from `dynamic.csv`: the rows where neither
+/// side has a contact point down, their longest run, and the largest and mean total force;
+/// the terminal line says whether both feet left the ground.
+fn check_flight(csv: &str, d: &serde_json::Value, stdout: &str) {
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let (pl, pr) = (col("points_in_contact_left"), col("points_in_contact_right"));
+    let (fl, fr) = (col("fz_left"), col("fz_right"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let airborne: Vec<bool> = rows.iter().map(|r| r[pl] + r[pr] == 0.0).collect();
+    let (mut longest, mut run) = (0usize, 0usize);
+    for &a in &airborne {
+        run = if a { run + 1 } else { 0 };
+        longest = longest.max(run);
+    }
+    let dt = 1e-3;
+    let total = airborne.iter().filter(|a| **a).count() as f64 * dt;
+    let num = |k: &str| d[k].as_f64().unwrap();
+    assert!((num("flight_time") - total).abs() < 1e-9, "{d}");
+    assert!((num("longest_flight") - longest as f64 * dt).abs() < 1e-9, "{d}");
+    let force: Vec<f64> = rows.iter().map(|r| r[fl] + r[fr]).collect();
+    let peak = force.iter().copied().fold(0.0, f64::max);
+    let mean = force.iter().sum::<f64>() / force.len() as f64;
+    assert!((num("peak_ground_force") - peak).abs() <= 1e-9 * peak, "{d}");
+    assert!((num("mean_ground_force") - mean).abs() <= 1e-6 * mean, "{d}");
+    let expected = match longest {
+        0 => "dynamic contact: a foot on the ground throughout",
+        _ => "dynamic contact: BOTH FEET OFF the ground for",
+    };
+    assert!(stdout.contains(expected), "{stdout}");
 }

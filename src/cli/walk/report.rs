@@ -4,7 +4,7 @@
 use super::WalkArgs;
 use crate::cli::out::{self, errln, outln};
 use crate::cli::CliResult;
-use biped_control::walk::{DynamicWalkRun, Method, Verdict, WalkRun, WalkVerdicts};
+use biped_control::walk::{DynamicWalkRun, DynamicWalkSummary, Method, Verdict, WalkRun, WalkVerdicts};
 use biped_robots::lola::LolaModel;
 use std::io::{self, IsTerminal};
 use std::process::ExitCode;
@@ -157,6 +157,27 @@ fn dynamic_line(method: Method, run: &DynamicWalkRun) -> io::Result<()> {
         Some(t) => outln!(
             "dynamic slip: a foot SLIPPED at t = {t:.3} s (up to {:.1} mm within one contact)",
             1e3 * s.max_slip_distance
+        ),
+    }?;
+    contact_line(s)
+}
+
+/// The dynamic walk's flight phases and peak ground force, in one line.
+fn contact_line(s: &DynamicWalkSummary) -> io::Result<()> {
+    let peak = match s.mean_ground_force > 0.0 {
+        true => format!(
+            "{:.0} N, {:.1}x the mean",
+            s.peak_ground_force,
+            s.peak_ground_force / s.mean_ground_force
+        ),
+        false => format!("{:.0} N", s.peak_ground_force),
+    };
+    match s.longest_flight_at {
+        None => outln!("dynamic contact: a foot on the ground throughout, peak ground force {peak}"),
+        Some(t) => outln!(
+            "dynamic contact: BOTH FEET OFF the ground for {:.3} s in all (longest {:.3} s from t = {t:.3} s), peak ground force {peak}",
+            s.flight_time,
+            s.longest_flight
         ),
     }
 }

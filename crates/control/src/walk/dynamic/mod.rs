@@ -39,6 +39,7 @@
 //!   (`diverged` in the summary), not an error.
 
 pub mod feedforward;
+pub mod flight;
 pub mod reference;
 pub mod run;
 pub mod slip;

@@ -1,6 +1,7 @@
 //! Time series and summary (verdict) of a dynamic walk.
 
 use super::reference::JointReference;
+use super::flight::Flight;
 use super::slip::{SideSample, SlipTracker};
 use super::DynamicWalkParams;
 use serde::Serialize;
@@ -108,6 +109,16 @@ pub struct DynamicWalkSummary {
     pub slip_at: Option<f64>,
     /// No side slipped (`slip_at` is `None`); independent of `walked`.
     pub friction_kept: bool,
+    /// Time with both feet off the ground ([`super::flight`]) \[s].
+    pub flight_time: f64,
+    /// Longest phase with both feet off the ground \[s].
+    pub longest_flight: f64,
+    /// Start of the longest flight phase \[s].
+    pub longest_flight_at: Option<f64>,
+    /// Largest total vertical ground force \[N].
+    pub peak_ground_force: f64,
+    /// Mean total vertical ground force (the weight, over a whole walk) \[N].
+    pub mean_ground_force: f64,
 }
 
 impl DynamicWalkSummary {
@@ -150,6 +161,7 @@ impl DynamicWalkSummary {
             };
             slip.add(t, r.dt, &[side(0), side(1)]);
         }
+        let flight = Flight::of(&s.t, r.dt, &s.points_in_contact, &s.foot_fz);
         Self {
             walked: fell_at.is_none() && progress >= p.min_progress,
             fell_at,
@@ -178,6 +190,11 @@ impl DynamicWalkSummary {
             max_slip_distance: slip.max_distance,
             slip_at: slip.slip_at,
             friction_kept: slip.slip_at.is_none(),
+            flight_time: flight.total,
+            longest_flight: flight.longest,
+            longest_flight_at: flight.longest_at,
+            peak_ground_force: flight.peak_force,
+            mean_ground_force: flight.mean_force,
         }
     }
 }
