@@ -169,7 +169,10 @@ fn check_flight(csv: &str, d: &serde_json::Value, stdout: &str) {
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
-    let (pl, pr) = (col("points_in_contact_left"), col("points_in_contact_right"));
+    let (pl, pr) = (
+        col("points_in_contact_left"),
+        col("points_in_contact_right"),
+    );
     let (fl, fr) = (col("fz_left"), col("fz_right"));
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
@@ -184,12 +187,21 @@ fn check_flight(csv: &str, d: &serde_json::Value, stdout: &str) {
     let total = airborne.iter().filter(|a| **a).count() as f64 * dt;
     let num = |k: &str| d[k].as_f64().unwrap();
     assert!((num("flight_time") - total).abs() < 1e-9, "{d}");
-    assert!((num("longest_flight") - longest as f64 * dt).abs() < 1e-9, "{d}");
+    assert!(
+        (num("longest_flight") - longest as f64 * dt).abs() < 1e-9,
+        "{d}"
+    );
     let force: Vec<f64> = rows.iter().map(|r| r[fl] + r[fr]).collect();
     let peak = force.iter().copied().fold(0.0, f64::max);
     let mean = force.iter().sum::<f64>() / force.len() as f64;
-    assert!((num("peak_ground_force") - peak).abs() <= 1e-9 * peak, "{d}");
-    assert!((num("mean_ground_force") - mean).abs() <= 1e-6 * mean, "{d}");
+    assert!(
+        (num("peak_ground_force") - peak).abs() <= 1e-9 * peak,
+        "{d}"
+    );
+    assert!(
+        (num("mean_ground_force") - mean).abs() <= 1e-6 * mean,
+        "{d}"
+    );
     let expected = match longest {
         0 => "dynamic contact: a foot on the ground throughout",
         _ => "dynamic contact: BOTH FEET OFF the ground for",

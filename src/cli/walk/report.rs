@@ -4,7 +4,9 @@
 use super::WalkArgs;
 use crate::cli::out::{self, errln, outln};
 use crate::cli::CliResult;
-use biped_control::walk::{DynamicWalkRun, DynamicWalkSummary, Method, Verdict, WalkRun, WalkVerdicts};
+use biped_control::walk::{
+    DynamicWalkRun, DynamicWalkSummary, Method, Verdict, WalkRun, WalkVerdicts,
+};
 use biped_robots::lola::LolaModel;
 use std::io::{self, IsTerminal};
 use std::process::ExitCode;

@@ -1,7 +1,7 @@
 //! Time series and summary (verdict) of a dynamic walk.
 
-use super::reference::JointReference;
 use super::flight::Flight;
+use super::reference::JointReference;
 use super::slip::{SideSample, SlipTracker};
 use super::DynamicWalkParams;
 use serde::Serialize;
