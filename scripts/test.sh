@@ -29,15 +29,16 @@ BIPED_REQUIRE_CLI=1 "$venv/bin/python" -m pytest -q python/tests
 
 # Ray binds to the machine's address: its cluster test runs where loopback is the only
 # network (a namespace of its own; as root, or mapped to root in a user namespace).
+ray_test='BIPED_REQUIRE_RAY=1 RAY_USAGE_STATS_ENABLED=0 "$0" -m pytest -q python/tests/test_ray.py'
 if unshare --net true 2>/dev/null; then
-  isolate=(unshare --net)
+  unshare --net bash -c "ip link set lo up && $ray_test" "$venv/bin/python"
 elif unshare --map-root-user --net true 2>/dev/null; then
-  isolate=(unshare --map-root-user --net)
+  unshare --map-root-user --net bash -c "ip link set lo up && $ray_test" "$venv/bin/python"
 else
-  echo "scripts/test.sh: cannot make a network namespace (unshare --net) for the Ray cluster test" >&2
-  exit 1
+  echo "scripts/test.sh: warning: no network namespace (unshare --net) here: the Ray cluster" \
+    "test runs on this machine's own address (Ray binds to it), its traffic still local" >&2
+  BIPED_RAY_HOST_ADDRESS=1 bash -c "$ray_test" "$venv/bin/python"
 fi
-"${isolate[@]}" bash -c 'ip link set lo up && BIPED_REQUIRE_RAY=1 RAY_USAGE_STATS_ENABLED=0 "$0" -m pytest -q python/tests/test_ray.py' "$venv/bin/python"
 
 end=$(date +%s)
 echo "scripts/test.sh: all passed in $((end - start)) s (cargo test $((rust_done - start)) s, Python $((end - rust_done)) s)"
