@@ -71,20 +71,29 @@ impl AppState {
     fn recording(&self, name: Option<&str>) -> Result<Option<&Recording>, ApiError> {
         match name {
             None => Ok(self.recordings.first()),
-            Some(n) => self.recordings.iter().find(|r| r.name == n).map(Some).ok_or_else(|| {
-                ApiError::not_found(format!("recording: no recording named `{n}`"))
-            }),
+            Some(n) => self
+                .recordings
+                .iter()
+                .find(|r| r.name == n)
+                .map(Some)
+                .ok_or_else(|| ApiError::not_found(format!("recording: no recording named `{n}`"))),
         }
     }
 
     /// Body poses of `frame` of a recording, or the neutral poses without a frame.
-    fn poses(&self, name: Option<&str>, frame: Option<usize>) -> Result<&[Isometry3<f64>], ApiError> {
+    fn poses(
+        &self,
+        name: Option<&str>,
+        frame: Option<usize>,
+    ) -> Result<&[Isometry3<f64>], ApiError> {
         let (Some(k), Some(rec)) = (frame, self.recording(name)?) else {
             return Ok(&self.neutral);
         };
         rec.poses.get(k).map(Vec::as_slice).ok_or_else(|| {
             let n = rec.poses.len();
-            ApiError::bad(format!("frame: {k} is out of range (the recording has {n} frames)"))
+            ApiError::bad(format!(
+                "frame: {k} is out of range (the recording has {n} frames)"
+            ))
         })
     }
 }
@@ -152,8 +161,12 @@ async fn get_ssv(State(s): State<Shared>) -> Result<Response, ApiError> {
 }
 
 fn utf8(body: &Bytes) -> Result<String, ApiError> {
-    String::from_utf8(body.to_vec())
-        .map_err(|_| ApiError(StatusCode::UNPROCESSABLE_ENTITY, "the new text is not UTF-8".into()))
+    String::from_utf8(body.to_vec()).map_err(|_| {
+        ApiError(
+            StatusCode::UNPROCESSABLE_ENTITY,
+            "the new text is not UTF-8".into(),
+        )
+    })
 }
 
 async fn put_ssv(State(s): State<Shared>, body: Bytes) -> Result<Json<Value>, ApiError> {
@@ -162,7 +175,9 @@ async fn put_ssv(State(s): State<Shared>, body: Bytes) -> Result<Json<Value>, Ap
     let file = guard.as_mut().ok_or_else(no_ssv)?;
     match file.replace(text, &s.robot) {
         Ok(()) => Ok(Json(json!({ "ssv": file.to_json() }))),
-        Err(e @ ViewError::Io(_)) => Err(ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string())),
+        Err(e @ ViewError::Io(_)) => {
+            Err(ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))
+        }
         Err(e) => Err(ApiError::invalid(e)),
     }
 }
@@ -184,13 +199,17 @@ async fn check_ssv(
         let guard = s.ssv.lock().unwrap();
         guard.as_ref().ok_or_else(no_ssv)?.path.clone()
     };
-    let mut candidate = CollisionFile::from_text(&path, text, &s.robot).map_err(ApiError::invalid)?;
+    let mut candidate =
+        CollisionFile::from_text(&path, text, &s.robot).map_err(ApiError::invalid)?;
     let poses = s.poses(q.recording.as_deref(), q.frame)?;
     let pairs = candidate.distances(poses).map_err(ApiError::invalid)?;
     Ok(Json(json!({ "ssv": candidate.to_json(), "pairs": pairs })))
 }
 
-async fn distances(State(s): State<Shared>, Query(q): Query<FrameQuery>) -> Result<Json<Value>, ApiError> {
+async fn distances(
+    State(s): State<Shared>,
+    Query(q): Query<FrameQuery>,
+) -> Result<Json<Value>, ApiError> {
     let poses = s.poses(q.recording.as_deref(), q.frame)?;
     let mut guard = s.ssv.lock().unwrap();
     let file = guard.as_mut().ok_or_else(no_ssv)?;
@@ -208,14 +227,19 @@ struct PageQuery {
     signals: Option<String>,
 }
 
-async fn recording_page(State(s): State<Shared>, Query(q): Query<PageQuery>) -> Result<Json<Value>, ApiError> {
-    let rec = s
-        .recording(q.name.as_deref())?
-        .ok_or_else(|| ApiError::not_found("no recording: start biped view with --recording DIR".into()))?;
+async fn recording_page(
+    State(s): State<Shared>,
+    Query(q): Query<PageQuery>,
+) -> Result<Json<Value>, ApiError> {
+    let rec = s.recording(q.name.as_deref())?.ok_or_else(|| {
+        ApiError::not_found("no recording: start biped view with --recording DIR".into())
+    })?;
     let n = rec.time.len();
     let from = q.from.unwrap_or(0);
     if from > n {
-        return Err(ApiError::bad(format!("from: {from} is past the last frame ({n} frames)")));
+        return Err(ApiError::bad(format!(
+            "from: {from} is past the last frame ({n} frames)"
+        )));
     }
     let count = q.count.unwrap_or(MAX_PAGE).min(MAX_PAGE).min(n - from);
     let frames = from..from + count;
@@ -224,10 +248,18 @@ async fn recording_page(State(s): State<Shared>, Query(q): Query<PageQuery>) -> 
         .map(|f| f.iter().map(pose7).collect())
         .collect();
     let mut signals = serde_json::Map::new();
-    for name in q.signals.iter().flat_map(|s| s.split(',')).filter(|s| !s.is_empty()) {
-        let series = rec
-            .series(name)
-            .ok_or_else(|| ApiError::bad(format!("signals: no column `{name}` in {}", rec.file.display())))?;
+    for name in q
+        .signals
+        .iter()
+        .flat_map(|s| s.split(','))
+        .filter(|s| !s.is_empty())
+    {
+        let series = rec.series(name).ok_or_else(|| {
+            ApiError::bad(format!(
+                "signals: no column `{name}` in {}",
+                rec.file.display()
+            ))
+        })?;
         signals.insert(name.to_string(), json!(series[frames.clone()]));
     }
     let markers = crate::markers::markers(rec, frames.clone());
@@ -262,7 +294,10 @@ async fn mesh(State(s): State<Shared>, UrlPath(k): UrlPath<usize>) -> Result<Res
         .get(k)
         .ok_or_else(|| ApiError::not_found(format!("no mesh {k}")))?;
     let bytes = std::fs::read(path).map_err(|e| {
-        ApiError(StatusCode::INTERNAL_SERVER_ERROR, format!("{}: {e}", path.display()))
+        ApiError(
+            StatusCode::INTERNAL_SERVER_ERROR,
+            format!("{}: {e}", path.display()),
+        )
     })?;
     Ok(([(header::CONTENT_TYPE, "application/octet-stream")], bytes).into_response())
 }

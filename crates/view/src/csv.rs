@@ -49,7 +49,10 @@ pub fn read(path: &Path) -> Result<Table, ViewError> {
 
 /// Parses table text; `file` labels errors.
 pub fn parse(text: &str, file: &str) -> Result<Table, ViewError> {
-    let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty());
     let Some((_, header)) = lines.next() else {
         return Err(ViewError::Recording(format!("{file}: empty file")));
     };
@@ -70,10 +73,19 @@ pub fn parse(text: &str, file: &str) -> Result<Table, ViewError> {
         }
         let parse = |(v, name): (&String, &String)| {
             v.trim().parse::<f64>().map_err(|_| {
-                ViewError::Recording(format!("{file}:{}: column `{name}`: `{v}` is not a number", i + 1))
+                ViewError::Recording(format!(
+                    "{file}:{}: column `{name}`: `{v}` is not a number",
+                    i + 1
+                ))
             })
         };
-        rows.push(values.iter().zip(&columns).map(parse).collect::<Result<_, _>>()?);
+        rows.push(
+            values
+                .iter()
+                .zip(&columns)
+                .map(parse)
+                .collect::<Result<_, _>>()?,
+        );
     }
     Ok(Table { columns, rows })
 }
@@ -92,7 +104,9 @@ mod tests {
 
     #[test]
     fn located_errors() {
-        let e = parse("time,x\n0,1\n0.1,oops\n", "t.csv").unwrap_err().to_string();
+        let e = parse("time,x\n0,1\n0.1,oops\n", "t.csv")
+            .unwrap_err()
+            .to_string();
         assert_eq!(e, "t.csv:3: column `x`: `oops` is not a number");
         let e = parse("time,x\n0\n", "t.csv").unwrap_err().to_string();
         assert_eq!(e, "t.csv:2: 1 fields, the header has 2");

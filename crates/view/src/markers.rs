@@ -35,7 +35,11 @@ fn columns<const N: usize>(rec: &Recording, names: [String; N]) -> Option<[usize
     Some(out)
 }
 
-fn points<const N: usize>(rec: &Recording, cols: [usize; N], frames: &Range<usize>) -> Vec<[f64; 3]> {
+fn points<const N: usize>(
+    rec: &Recording,
+    cols: [usize; N],
+    frames: &Range<usize>,
+) -> Vec<[f64; 3]> {
     let rows = &rec.values[frames.clone()];
     rows.iter()
         .map(|r| {

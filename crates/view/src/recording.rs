@@ -65,7 +65,9 @@ pub fn open(path: &Path, robot: &Robot) -> Result<Vec<Recording>, ViewError> {
              (biped walk) in this folder"
         )));
     }
-    let read = files.iter().map(|(name, file)| from_table(file, name, robot));
+    let read = files
+        .iter()
+        .map(|(name, file)| from_table(file, name, robot));
     read.collect()
 }
 
@@ -104,11 +106,11 @@ pub fn from_table(file: &Path, name: &str, robot: &Robot) -> Result<Recording, V
             }
         }
         normalize_quaternions(model, &mut q);
-        update_placements(model, &mut data, &q).map_err(|e| {
-            ViewError::Recording(format!("{shown}: row at time {}: {e}", row[t]))
-        })?;
+        update_placements(model, &mut data, &q)
+            .map_err(|e| ViewError::Recording(format!("{shown}: row at time {}: {e}", row[t])))?;
         rec.time.push(row[t]);
-        rec.poses.push((0..model.nbodies()).map(|b| data.body_pose(b)).collect());
+        rec.poses
+            .push((0..model.nbodies()).map(|b| data.body_pose(b)).collect());
         rec.values.push(row.clone());
     }
     Ok(rec)
@@ -117,7 +119,10 @@ pub fn from_table(file: &Path, name: &str, robot: &Robot) -> Result<Recording, V
 /// For every coordinate of `q`, the table column `q[NAME]` holding it.
 fn coordinate_columns(model: &Model, table: &Table) -> Vec<Option<usize>> {
     let names = model.q_names();
-    names.iter().map(|n| table.column(&format!("q[{n}]"))).collect()
+    names
+        .iter()
+        .map(|n| table.column(&format!("q[{n}]")))
+        .collect()
 }
 
 /// Every k-th row so that about [`FRAME_RATE`] frames per second remain, and the last row.
@@ -160,7 +165,12 @@ pub fn neutral_poses(robot: &Robot) -> Result<Vec<Isometry3<f64>>, ViewError> {
     let model = &robot.model;
     let mut data = Data::new(model);
     let mut q = model.neutral();
-    let floating: Vec<usize> = model.joints().iter().filter(|j| j.nq == 7).map(|j| j.q_index).collect();
+    let floating: Vec<usize> = model
+        .joints()
+        .iter()
+        .filter(|j| j.nq == 7)
+        .map(|j| j.q_index)
+        .collect();
     let place = |data: &mut Data, q: &DVector<f64>| {
         update_placements(model, data, q).map_err(|e| ViewError::Robot(e.to_string()))
     };
