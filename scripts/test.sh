@@ -25,6 +25,7 @@ export PATH="$venv/bin:$PATH"  # the maturin build backend runs the venv's `matu
 # dependency, numpy, is installed above).
 "$venv/bin/pip" install -q --no-build-isolation --force-reinstall --no-deps ./python
 BIPED_REQUIRE_CLI=1 "$venv/bin/python" -m pytest -q python/tests
+"$root/scripts/test_view.sh"  # `biped view` in a real browser (chromium, npm)
 
 end=$(date +%s)
 echo "scripts/test.sh: all passed in $((end - start)) s (cargo test $((rust_done - start)) s, Python $((end - rust_done)) s)"

@@ -94,7 +94,8 @@ pub fn run(args: ViewArgs) -> CliResult {
         let dir = config.web_dir.display();
         errln!("warning: {dir}/index.html is missing: build the page with `npm ci && npm run build` in web/");
     }
-    let server = Server::bind(addr, state).map_err(|e| format!("--port {}: cannot listen on {addr}: {e}", args.port))?;
+    let server = Server::bind(addr, state)
+        .map_err(|e| format!("--port {}: cannot listen on {addr}: {e}", args.port))?;
     let bound = server.local_addr()?;
     outln!("serving http://{bound}/")?;
     std::io::stdout().flush()?;
