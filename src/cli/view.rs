@@ -6,7 +6,7 @@ use biped_robots::lola::LolaType;
 use biped_view::{serve, AppState, RobotSource, Server, ViewConfig};
 use clap::Args;
 use std::io::Write;
-use std::net::{SocketAddr, ToSocketAddrs};
+use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -17,13 +17,13 @@ pub struct ViewArgs {
     /// Port to listen on (0: a free one).
     #[arg(long, default_value_t = 8765)]
     port: u16,
-    /// Address to listen on; give another than 127.0.0.1 only to serve other machines.
+    /// IP address to listen on (or `localhost`); another than 127.0.0.1 serves other machines.
     #[arg(long, default_value = "127.0.0.1")]
     host: String,
     /// Show the Lola-like biped: `type2` or `type3`.
     #[arg(long, value_name = "TYPE", conflicts_with = "urdf")]
     lola: Option<LolaType>,
-    /// Show a URDF robot (its <visual> geometry).
+    /// Show a URDF robot (its `<visual>` geometry).
     #[arg(long, value_name = "FILE")]
     urdf: Option<PathBuf>,
     /// Give the URDF root link a free joint named "root" (what `biped walk`/`simulate` use).
@@ -66,12 +66,13 @@ fn robot_source(args: &ViewArgs) -> Result<RobotSource, String> {
 }
 
 fn address(args: &ViewArgs) -> Result<SocketAddr, String> {
-    let mut addrs = (args.host.as_str(), args.port)
-        .to_socket_addrs()
-        .map_err(|e| format!("--host {}: {e}", args.host))?;
-    addrs
-        .next()
-        .ok_or_else(|| format!("--host {}: no address", args.host))
+    let ip: IpAddr = match args.host.as_str() {
+        "localhost" => Ipv4Addr::LOCALHOST.into(),
+        host => host.parse().map_err(|_| {
+            format!("--host: `{host}` is not an IP address (e.g. 127.0.0.1, ::1 or 0.0.0.0)")
+        })?,
+    };
+    Ok(SocketAddr::new(ip, args.port))
 }
 
 /// Loads, binds, prints the address and serves until Ctrl-C (or SIGTERM).
