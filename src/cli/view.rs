@@ -15,10 +15,10 @@ use std::process::ExitCode;
 #[command(long_about = VIEW_HELP)]
 pub struct ViewArgs {
     /// Port to listen on (0: a free one).
-    #[arg(long, default_value_t = 8765)]
+    #[arg(long, default_value_t = 8765, allow_hyphen_values = true)]
     port: u16,
     /// IP address to listen on (or `localhost`); another than 127.0.0.1 serves other machines.
-    #[arg(long, default_value = "127.0.0.1")]
+    #[arg(long, default_value = "127.0.0.1", allow_hyphen_values = true)]
     host: String,
     /// Show the Lola-like biped: `type2` or `type3`.
     #[arg(long, value_name = "TYPE", conflicts_with = "urdf")]
@@ -33,7 +33,7 @@ pub struct ViewArgs {
     #[arg(long = "package-path", value_name = "DIR", requires = "urdf")]
     package_path: Vec<PathBuf>,
     /// Collision-model file (TOML) to show and edit in place.
-    #[arg(long, value_name = "FILE.toml")]
+    #[arg(long, value_name = "FILE")]
     ssv: Option<PathBuf>,
     /// What `biped walk` or `biped simulate` wrote (a folder or one CSV table) to play back.
     #[arg(long, value_name = "DIR")]

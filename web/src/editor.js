@@ -5,7 +5,7 @@
 import * as THREE from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { checkSsv, putSsv } from './api.js';
-import { kindOf, mirrored, splice, vertices } from './format.js';
+import { kindOf, mirrored, pairsText, splice, vertices } from './format.js';
 
 const $ = (id) => document.getElementById(id);
 const TEMPLATES = {
@@ -44,9 +44,8 @@ export function createEditor(view, layer, model, text, at, showPairs) {
   }
 
   // Checks the candidate text; a stale answer (an edit came after it) is dropped.
-  async function check() {
-    const g = segment();
-    s.pending = splice(s.text, g.source.span, s.entries);
+  async function check(candidate) {
+    s.pending = candidate === undefined ? splice(s.text, segment().source.span, s.entries) : candidate;
     const seq = ++s.seq;
     s.busy = true;
     $('status').textContent = 'checking…';
@@ -59,6 +58,7 @@ export function createEditor(view, layer, model, text, at, showPairs) {
       $('status').textContent = 'unsaved changes';
       document.body.dataset.dirty = '1';
       redraw();
+      renderPairs();
       showPairs(answer.pairs, s.model.activation_distance);
     } catch (e) {
       if (seq !== s.seq) return;
@@ -79,6 +79,7 @@ export function createEditor(view, layer, model, text, at, showPairs) {
       document.body.dataset.dirty = '0';
       document.body.dataset.saved = String(Number(document.body.dataset.saved || 0) + 1);
       redraw();
+      renderPairs();
     } catch (e) {
       error(e.message);
       $('status').textContent = 'not saved';
@@ -169,6 +170,36 @@ export function createEditor(view, layer, model, text, at, showPairs) {
     });
   }
 
+  // The selected segment's pairs from the file's `pairs = [...]` array: remove one, add one.
+  function renderPairs() {
+    const box = $('segment-pairs');
+    box.replaceChildren();
+    const list = s.model.pair_list;
+    if (!s.segment) return;
+    if (!list) {
+      box.textContent = 'pairs: written as [[pair]] tables, edit them in the file';
+      return;
+    }
+    const edit = (pairs) => check(s.text.slice(0, list.span[0]) + pairsText(pairs) + s.text.slice(list.span[1]));
+    box.append('pairs: ');
+    list.pairs.forEach(([a, b], i) => {
+      if (a !== s.segment && b !== s.segment) return;
+      const x = document.createElement('button');
+      x.className = 'pair';
+      x.title = 'remove this pair';
+      x.textContent = `${a === s.segment ? b : a} ×`;
+      x.onclick = () => edit(list.pairs.filter((_, j) => j !== i));
+      box.append(x);
+    });
+    const other = document.createElement('select');
+    other.id = 'pair-with';
+    s.model.segments.filter((g) => g.name !== s.segment).forEach((g) => other.add(new Option(g.name, g.name)));
+    const add = document.createElement('button');
+    add.textContent = 'add pair';
+    add.onclick = () => edit([...list.pairs, [s.segment, other.value]]);
+    box.append(' with ', other, add);
+  }
+
   function select(name) {
     s.segment = name;
     const g = segment();
@@ -179,6 +210,7 @@ export function createEditor(view, layer, model, text, at, showPairs) {
       : `${g.source.kind.replace('_', ' ')} ${g.source.of}: edit that segment`;
     $('segment-info').textContent = info;
     renderEntries();
+    renderPairs();
     redraw();
   }
 

@@ -45,3 +45,8 @@ export function mirrored(entry, plane) {
   out[k] = k === 'point' ? flip(entry.point) : entry[k].map(flip);
   return out;
 }
+
+// The text of the `pairs = [...]` array.
+export function pairsText(pairs) {
+  return `[\n${pairs.map(([a, b]) => `  ["${a}", "${b}"],\n`).join('')}]`;
+}

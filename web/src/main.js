@@ -30,7 +30,7 @@ async function main() {
   const robot = createRobot(view.scene, scene);
   robot.setPoses(scene.neutral);
   view.frame(new THREE.Box3().setFromObject(robot.root));
-  $('reset-view').onclick = view.reset;
+  $('reset-view').onclick = () => view.frame(new THREE.Box3().setFromObject(robot.root));
   $('show-robot').onchange = (e) => { robot.root.visible = e.target.checked; };
   const layer = scene.ssv ? createSsvLayer(view.scene, robot) : null;
   if (layer) robot.setOpacity(0.45);

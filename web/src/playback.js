@@ -20,7 +20,18 @@ export function createPlayback(view, robot, names, onFrame) {
   markers.add(com, comGround, zmp);
   view.scene.add(markers);
   const arrows = [];
-  const state = { rec: null, frame: 0, playing: false, t: 0, last: null };
+  const state = { rec: null, frame: 0, playing: false, t: 0, last: null, base: null };
+
+  // Moves the camera with the robot's base (horizontally), so a walk stays in view.
+  function follow() {
+    const base = robot.bodies[0].position.clone().setZ(0);
+    if (state.base && $('follow').checked) {
+      const delta = base.clone().sub(state.base);
+      view.camera.position.add(delta);
+      view.controls.target.add(delta);
+    }
+    state.base = base;
+  }
 
   function frameAt(t) {
     const time = state.rec.time;
@@ -37,6 +48,7 @@ export function createPlayback(view, robot, names, onFrame) {
     const rec = state.rec;
     state.frame = k;
     robot.setPoses(rec.poses[k]);
+    follow();
     $('scrub').value = String(k);
     $('time').textContent = `t = ${rec.time[k].toFixed(3)} s (frame ${k} of ${rec.time.length})`;
     document.body.dataset.frame = String(k);

@@ -4,6 +4,7 @@ import * as THREE from 'three';
 import { STLLoader } from 'three/addons/loaders/STLLoader.js';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
 import { ColladaLoader } from 'three/addons/loaders/ColladaLoader.js';
+import { VRMLLoader } from 'three/addons/loaders/VRMLLoader.js';
 
 const material = new THREE.MeshStandardMaterial({ color: 0x9aa4b4, roughness: 0.6, metalness: 0.1 });
 
@@ -28,6 +29,8 @@ function loadMesh(shape, holder) {
     }, undefined, fail);
   } else if (shape.format === 'dae') {
     new ColladaLoader().load(shape.url, (c) => done(c.scene), undefined, fail);
+  } else if (shape.format === 'wrl') {
+    new VRMLLoader().load(shape.url, done, undefined, fail);
   }
 }
 

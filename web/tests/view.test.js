@@ -151,6 +151,40 @@ test('a handle drag moves the vertex and is saved', async () => {
   assert.match(ssvModel(VIEW_SSV), /closest pair: /);
 });
 
+test('entries are created, copied, mirrored and deleted, a pair added, and saved', async () => {
+  const checked = async (action) => {
+    const seq = await page.evaluate(() => window.bipedView.editor.state.seq);
+    await action();
+    await page.waitForFunction((n) => {
+      const s = window.bipedView.editor.state;
+      return s.seq > n && !s.busy && document.getElementById('status').textContent === 'unsaved changes';
+    }, seq);
+  };
+  const count = () => page.evaluate(() => {
+    const s = window.bipedView.editor.state;
+    return s.model.segments.find((g) => g.name === 'r_forearm').ssvs.length;
+  });
+  await page.locator('#segment').selectOption('r_forearm');
+  const n = await count();
+  await checked(() => page.locator('[data-add="point"]').click());
+  assert.equal(await count(), n + 1);
+  await page.locator('#mirror-copy').check();
+  await checked(() => page.locator('[data-mirror="xz"]').click());
+  assert.equal(await count(), n + 2);
+  const [point, image] = await page.evaluate(() => window.bipedView.editor.state.entries.slice(-2).map((e) => e.point));
+  assert.deepEqual(image, [point[0], -point[1], point[2]]);
+  await checked(() => page.locator('#copy-entry').click());
+  assert.equal(await count(), n + 3);
+  await checked(() => page.locator('#delete-entry').click());
+  assert.equal(await count(), n + 2);
+  await page.locator('#pair-with').selectOption('l_upper_arm');
+  await checked(() => page.locator('#segment-pairs button', { hasText: 'add pair' }).click());
+  await page.locator('#save').click();
+  await page.waitForFunction(() => document.body.dataset.saved === '3');
+  const report = JSON.parse(execFileSync(BIPED, ['ssv', 'model', VIEW_SSV, '--json'], { encoding: 'utf8' }));
+  assert.ok(report.pairs.some((p) => p.a === 'r_forearm' && p.b === 'l_upper_arm'), 'the new pair is evaluated');
+});
+
 test('a bad edit shows the located error and leaves the file as it was', async () => {
   const saved = readFileSync(VIEW_SSV);
   refusalExpected = true;

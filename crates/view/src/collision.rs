@@ -3,7 +3,7 @@
 //! back as a whole only when the new text loads.
 
 use crate::robot::{PoseJson, Robot};
-use crate::source::{segment_sources, SegmentSource};
+use crate::source::{pair_list, segment_sources, PairListJson, SegmentSource};
 use crate::ViewError;
 use biped_ssv::format::{self, LoadedModel};
 use biped_ssv::{PairDistance, Ssv};
@@ -104,6 +104,8 @@ pub struct ModelJson {
     pub segments: Vec<SegmentJson>,
     /// Pairs by segment name.
     pub pairs: Vec<[String; 2]>,
+    /// The file's `pairs = [...]` array, which the page edits (`null` without one).
+    pub pair_list: Option<PairListJson>,
 }
 
 /// One pair's distance at a posture.
@@ -183,6 +185,7 @@ impl CollisionFile {
                 .collect(),
             segments: segments.collect(),
             pairs: model.pairs().iter().map(pair).collect(),
+            pair_list: pair_list(&self.text),
         }
     }
 

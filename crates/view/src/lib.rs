@@ -11,7 +11,8 @@
 //!   (`/api/mesh/K`). The model: `{"file", "activation_distance", "bodies": [{"name",
 //!   "body", "offset"}], "segments": [{"name", "body", "ssvs": [{"kind", "points",
 //!   "radius"}], "source"}], "pairs"}`; `source` is `{"kind": "ssvs", "entries", "span"}`
-//!   (the `ssvs` array's place in the file text, UTF-16 indices), `mirror_of` or `version_of`.
+//!   (the `ssvs` array's place in the file text, UTF-16 indices), `mirror_of` or `version_of`;
+//!   `pair_list` is the `pairs = [...]` array with its `span` (or `null`).
 //! * `GET /api/ssv` — the model file's text. `PUT /api/ssv` — new text: loaded with the same
 //!   loader as `biped ssv model` and bound to the robot; on success written as a whole and
 //!   answered 200 with `{"ssv": model}`; otherwise 422 `{"error": "FILE:LINE: ..."}` and the

@@ -78,7 +78,7 @@ pub enum ShapeJson {
     Mesh {
         /// Where the page fetches the file (`/api/mesh/K`).
         url: String,
-        /// File format from the extension: `stl`, `obj` or `dae`.
+        /// File format from the extension: `stl`, `obj`, `dae` or `wrl` (VRML97).
         format: String,
         /// Scale per axis.
         scale: [f64; 3],
@@ -266,10 +266,11 @@ impl Robot {
                 };
                 let ext = file.extension().and_then(|e| e.to_str()).unwrap_or("");
                 let format = ext.to_ascii_lowercase();
-                if !["stl", "obj", "dae"].contains(&format.as_str()) {
+                if !["stl", "obj", "dae", "wrl"].contains(&format.as_str()) {
                     let what = format!("{at}: mesh {} not drawn", file.display());
-                    self.warnings
-                        .push(format!("{what}: format `{ext}` (STL, OBJ or DAE)"));
+                    self.warnings.push(format!(
+                        "{what}: format `{ext}` (STL, OBJ, DAE or VRML97 .wrl)"
+                    ));
                     return None;
                 }
                 self.meshes.push(file);

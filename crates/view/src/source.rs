@@ -54,6 +54,31 @@ pub enum SegmentSource {
 struct SourceFile {
     #[serde(default)]
     segment: Vec<SourceSegment>,
+    pairs: Option<Spanned<Vec<[String; 2]>>>,
+}
+
+/// The file's `pairs = [...]` array (pairs written as `[[pair]]` tables are not in it).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PairListJson {
+    /// The pairs of the array, by segment name.
+    pub pairs: Vec<[String; 2]>,
+    /// Where the array is in the text (UTF-16 indices, as for segments).
+    pub span: [usize; 2],
+}
+
+fn utf16_span(text: &str, span: std::ops::Range<usize>) -> [usize; 2] {
+    let utf16 = |byte: usize| text[..byte].encode_utf16().count();
+    [utf16(span.start), utf16(span.end)]
+}
+
+/// The `pairs = [...]` array of the text, if it has one and parses.
+pub fn pair_list(text: &str) -> Option<PairListJson> {
+    let pairs = toml::from_str::<SourceFile>(text).ok()?.pairs?;
+    let span = utf16_span(text, pairs.span());
+    Some(PairListJson {
+        pairs: pairs.into_inner(),
+        span,
+    })
 }
 
 #[derive(Deserialize)]
@@ -69,14 +94,13 @@ pub fn segment_sources(text: &str) -> Vec<(String, SegmentSource)> {
     let Ok(file) = toml::from_str::<SourceFile>(text) else {
         return Vec::new();
     };
-    let utf16 = |byte: usize| text[..byte].encode_utf16().count();
     let source = |s: SourceSegment| {
         let src = match (s.ssvs, s.mirror_of, s.version_of) {
             (Some(ssvs), _, _) => {
-                let span = ssvs.span();
+                let span = utf16_span(text, ssvs.span());
                 SegmentSource::Ssvs {
                     entries: ssvs.into_inner(),
-                    span: [utf16(span.start), utf16(span.end)],
+                    span,
                 }
             }
             (None, Some(of), _) => SegmentSource::MirrorOf { of },

@@ -75,6 +75,19 @@ fn scene_has_lola_boxes_and_every_segment() {
     assert!(array.starts_with('[') && array.ends_with(']'), "{array}");
     let entries = explicit["source"]["entries"].as_array().unwrap();
     assert_eq!(array.matches("radius").count(), entries.len());
+    // The pairs array: its span holds exactly the pairs it lists, all of them the model's.
+    let list = &scene["ssv"]["pair_list"];
+    let (a, b) = (
+        list["span"][0].as_u64().unwrap() as usize,
+        list["span"][1].as_u64().unwrap() as usize,
+    );
+    let pairs_text = String::from_utf16(&utf16[a..b]).unwrap();
+    let listed = list["pairs"].as_array().unwrap();
+    assert_eq!(pairs_text.matches("\"]").count(), listed.len());
+    assert_eq!(
+        listed.len(),
+        scene["ssv"]["pairs"].as_array().unwrap().len()
+    );
     // Without a recording the robot stands at its neutral pose with the soles on the ground.
     let sole = lola.model.body_id("l_sole").unwrap();
     let z = scene["neutral"][sole]["position"][2].as_f64().unwrap();
