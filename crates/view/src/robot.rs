@@ -2,7 +2,7 @@
 //! drawn on each body — the Lola-like biped's link boxes or a URDF's visual elements.
 
 use crate::ViewError;
-use biped_dynamics::urdf::{self, PackagePath, Shape, UrdfOptions};
+use biped_dynamics::urdf::{self, GeometryElement, PackagePath, Shape, UrdfOptions};
 use biped_dynamics::Model;
 use biped_robots::lola::{self, params::Locator, LolaType};
 use nalgebra::Isometry3;
@@ -217,18 +217,15 @@ fn urdf_robot(path: &Path, floating: bool, package_path: &[PathBuf]) -> Result<R
         let Some(&(body, link_pose)) = frames.get(link.link.as_str()) else {
             continue;
         };
-        for element in &link.visuals {
-            let Some(shape) = robot.shape(&element.shape, &packages, base, &element.at) else {
-                continue;
-            };
-            let pose = link_pose * element.origin;
-            let geometry = GeometryJson {
-                pose: PoseJson::from(&pose),
-                shape,
-            };
-            match body {
-                Some(b) => robot.bodies[b].geometry.push(geometry),
-                None => robot.world.push(geometry),
+        let mut drawn = robot.place(&link.visuals, body, &link_pose, &packages, base);
+        // A link none of whose visuals could be drawn shows its collision geometry instead.
+        if drawn == 0 && !link.visuals.is_empty() {
+            drawn = robot.place(&link.collisions, body, &link_pose, &packages, base);
+            if drawn > 0 {
+                let what = format!("link \"{}\"", link.link);
+                robot
+                    .warnings
+                    .push(format!("{what}: drawn from its <collision> elements"));
             }
         }
     }
@@ -236,6 +233,34 @@ fn urdf_robot(path: &Path, floating: bool, package_path: &[PathBuf]) -> Result<R
 }
 
 impl Robot {
+    /// Adds the drawable ones of `elements` (of a link at `link_pose` in `body`); returns how
+    /// many.
+    fn place(
+        &mut self,
+        elements: &[GeometryElement],
+        body: Option<usize>,
+        link_pose: &Isometry3<f64>,
+        packages: &PackagePath,
+        base: &Path,
+    ) -> usize {
+        let mut drawn = 0;
+        for element in elements {
+            let Some(shape) = self.shape(&element.shape, packages, base, &element.at) else {
+                continue;
+            };
+            let geometry = GeometryJson {
+                pose: PoseJson::from(&(link_pose * element.origin)),
+                shape,
+            };
+            match body {
+                Some(b) => self.bodies[b].geometry.push(geometry),
+                None => self.world.push(geometry),
+            }
+            drawn += 1;
+        }
+        drawn
+    }
+
     /// The drawn shape of a URDF shape; a mesh that cannot be resolved, or of a format the
     /// page cannot read, is left out with a warning.
     fn shape(

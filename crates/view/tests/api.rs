@@ -315,6 +315,10 @@ fn urdf_visuals_are_placed_on_their_bodies_and_meshes_served() {
   <link name="leg"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>
     <visual><geometry><mesh filename="foot.stl" scale="2 2 2"/></geometry></visual>
     <visual><geometry><mesh filename="missing.stl"/></geometry></visual></link>
+  <link name="toe"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual><geometry><mesh filename="gone.stl"/></geometry></visual>
+    <collision><origin xyz="0.1 0 0"/><geometry><sphere radius="0.04"/></geometry></collision></link>
+  <joint name="ankle" type="fixed"><parent link="leg"/><child link="toe"/><origin xyz="0 0 -0.4"/></joint>
   <joint name="hip" type="revolute"><parent link="base"/><child link="leg"/><origin xyz="0 0 -0.5"/>
     <axis xyz="0 1 0"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
 </robot>"#;
@@ -343,11 +347,14 @@ fn urdf_visuals_are_placed_on_their_bodies_and_meshes_served() {
         (&mesh["type"], &mesh["format"]),
         (&"mesh".into(), &"stl".into())
     );
-    assert_eq!(
-        leg["geometry"].as_array().unwrap().len(),
-        1,
-        "the missing mesh is left out"
-    );
+    // The missing mesh is left out; the toe (merged into the leg 0.4 m below its frame) has no
+    // drawable visual, so its collision sphere is drawn.
+    let leg_geometry = leg["geometry"].as_array().unwrap();
+    assert_eq!(leg_geometry.len(), 2, "{leg_geometry:?}");
+    let sphere = serde_json::json!({"type": "sphere", "radius": 0.04});
+    assert_eq!(leg_geometry[1]["shape"], sphere);
+    let at = serde_json::json!([0.1, 0.0, -0.4]);
+    assert_eq!(leg_geometry[1]["pose"]["position"], at);
     let warnings = scene["warnings"].as_array().unwrap();
     assert!(
         warnings
@@ -357,6 +364,10 @@ fn urdf_visuals_are_placed_on_their_bodies_and_meshes_served() {
     );
     let (status, bytes) = server.request("GET", mesh["url"].as_str().unwrap(), b"");
     assert_eq!((status, bytes.as_slice()), (200, stl.as_bytes()));
+    assert!(warnings.iter().any(|w| w
+        .as_str()
+        .unwrap()
+        .contains("link \"toe\": drawn from its <collision>")));
     // The floating robot is lifted so that its lowest body frame (the leg) is on the ground.
     let leg_index = bodies.iter().position(|b| b["name"] == "leg").unwrap();
     assert_eq!(scene["neutral"][leg_index]["position"][2], 0.0);
