@@ -111,6 +111,12 @@ test('scrubbing the recording moves the robot', async () => {
   await shot('scrubbed.png');
   const share = changedShare(before, await canvasPixels());
   assert.ok(share > 0.005, `only ${(share * 100).toFixed(2)} % of the pixels changed`);
+  // The whole page mid-step (what the README shows), then back to the start.
+  const mid = String(Math.round(Number(last) * 0.45));
+  await page.locator('#scrub').fill(mid);
+  await page.waitForFunction((k) => document.body.dataset.frame === k, mid);
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: join(OUT, 'page.png') });
   await page.keyboard.press('Home');
   await page.waitForFunction(() => document.body.dataset.frame === '0');
 });
