@@ -3,7 +3,7 @@
 import { getSignal } from './api.js';
 
 const $ = (id) => document.getElementById(id);
-const PREFERRED = ['ground.tau_n', 'L_G.z', 'com.z', 'zmp.y'];
+const PREFERRED = ['L_z', 'tau_z', 'ground.tau_n', 'L_G.z', 'com.z', 'zmp.y'];
 
 export function createPlot(playback) {
   const canvas = $('plot');

@@ -18,6 +18,30 @@ impl Table {
     pub fn column(&self, name: &str) -> Option<usize> {
         self.columns.iter().position(|c| c == name)
     }
+
+    /// Appends the columns of `other` this table lacks, each row taking the values of the
+    /// row of `other` nearest in time (both tables sorted by their time column `t`).
+    pub fn join(&mut self, other: &Table, t: usize, other_t: usize) {
+        let new: Vec<usize> = (0..other.columns.len())
+            .filter(|&c| c != other_t && self.column(&other.columns[c]).is_none())
+            .collect();
+        if other.rows.is_empty() || new.is_empty() {
+            return;
+        }
+        self.columns
+            .extend(new.iter().map(|&c| other.columns[c].clone()));
+        let mut k = 0;
+        for row in &mut self.rows {
+            let time = row[t];
+            while k + 1 < other.rows.len()
+                && (other.rows[k + 1][other_t] - time).abs()
+                    <= (other.rows[k][other_t] - time).abs()
+            {
+                k += 1;
+            }
+            row.extend(new.iter().map(|&c| other.rows[k][c]));
+        }
+    }
 }
 
 /// Splits one line at commas outside double quotes (`""` inside quotes is one quote).
@@ -100,6 +124,16 @@ mod tests {
         assert_eq!(t.columns, ["time", "q[a,b]", "x"]);
         assert_eq!(t.rows[1], [0.1, -2.0, 0.003]);
         assert!(t.rows[0][2].is_nan());
+    }
+
+    #[test]
+    fn join_takes_the_nearest_row_in_time() {
+        let mut a = parse("time,x\n0,1\n0.1,2\n0.2,3\n", "a.csv").unwrap();
+        let b = parse("time,x,y\n0,9,10\n0.09,9,20\n0.5,9,30\n", "b.csv").unwrap();
+        a.join(&b, 0, 0);
+        assert_eq!(a.columns, ["time", "x", "y"]);
+        let y: Vec<f64> = a.rows.iter().map(|r| r[2]).collect();
+        assert_eq!(y, [10.0, 20.0, 20.0]);
     }
 
     #[test]

@@ -73,11 +73,25 @@ pub fn open(path: &Path, robot: &Robot) -> Result<Vec<Recording>, ViewError> {
 
 /// Reads one table and computes the body poses of its kept frames.
 pub fn from_table(file: &Path, name: &str, robot: &Robot) -> Result<Recording, ViewError> {
-    let table = csv::read(file)?;
+    let mut table = csv::read(file)?;
     let shown = file.display();
-    let Some(t) = table.column("time").or_else(|| table.column("t")) else {
+    let time = |t: &Table| t.column("time").or_else(|| t.column("t"));
+    let Some(t) = time(&table) else {
         return Err(ViewError::Recording(format!("{shown}: no `time` column")));
     };
+    // A walk's METHOD.csv beside METHOD_trajectory.csv adds L_z, tau_z, distances, margins.
+    let series = file
+        .to_str()
+        .and_then(|f| f.strip_suffix("_trajectory.csv"))
+        .map(|stem| PathBuf::from(format!("{stem}.csv")))
+        .filter(|p| p.is_file());
+    if let Some(series) = series {
+        let other = csv::read(&series)?;
+        let other_t = time(&other).ok_or_else(|| {
+            ViewError::Recording(format!("{}: no `time` column", series.display()))
+        })?;
+        table.join(&other, t, other_t);
+    }
     let model = &robot.model;
     let map = coordinate_columns(model, &table);
     if map.iter().all(Option::is_none) {

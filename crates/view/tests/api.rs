@@ -39,6 +39,11 @@ fn write_recording(dir: &Path) -> PathBuf {
     }
     let path = dir.join("minimization_trajectory.csv");
     std::fs::write(&path, csv).unwrap();
+    // The walk's series file beside it, at 100 Hz: L_z = 10 t.
+    let series: String = (0..=100)
+        .map(|k| format!("{},{}\n", k as f64 / 100.0, k as f64 / 10.0))
+        .collect();
+    std::fs::write(dir.join("minimization.csv"), format!("time,L_z\n{series}")).unwrap();
     path
 }
 
@@ -115,6 +120,8 @@ fn recording_is_paged_at_100_hz_with_poses_from_q() {
     let x = pelvis[0].as_f64().unwrap();
     assert!((x - 0.1).abs() < 1e-6 && (pelvis[2].as_f64().unwrap() - 1.0).abs() < 1e-6);
     assert_eq!(page["signals"]["com.z"][5], 0.9);
+    let (_, lz) = server.json("GET", "/api/recording?from=30&count=2&signals=L_z", b"");
+    assert_eq!(lz["signals"]["L_z"], serde_json::json!([3.0, 3.1]));
     assert!((page["zmp"][20][0].as_f64().unwrap() - 0.11).abs() < 1e-12);
     let (_, last) = server.json("GET", "/api/recording?from=100&count=40", b"");
     assert_eq!(
