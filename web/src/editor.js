@@ -2,10 +2,10 @@
 // handles in the viewport (TransformControls), create / copy / delete / mirror entries;
 // every edit is checked by the server (same loader as `biped ssv model`), which answers the
 // expanded model and the pair distances; save writes the file.
-import * as THREE from 'three';
-import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { checkSsv, putSsv } from './api.js';
-import { kindOf, mirrored, pairsText, splice, vertices } from './format.js';
+import { mirrored, pairsText, splice, vertices } from './format.js';
+import { createHandle } from './handle.js';
+import { renderEntries as renderEntriesInto, renderPairs as renderPairsInto } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
 const TEMPLATES = {
@@ -17,18 +17,7 @@ const TEMPLATES = {
 export function createEditor(view, layer, model, text, at, showPairs) {
   const s = { model, text, pending: text, segment: null, entries: null, entry: 0, vertex: 0,
     mode: 'vertex', seq: 0, busy: false };
-  const handle = new THREE.Mesh(new THREE.SphereGeometry(0.012, 12, 8),
-    new THREE.MeshBasicMaterial({ color: 0xff6600, depthTest: false }));
-  handle.renderOrder = 12;
-  view.scene.add(handle);
-  const gizmo = new TransformControls(view.camera, view.renderer.domElement);
-  gizmo.setSize(0.7);
-  view.scene.add(gizmo.getHelper());
-  gizmo.addEventListener('dragging-changed', (e) => {
-    view.controls.enabled = !e.value;
-    if (!e.value) fromHandle(true);
-  });
-  gizmo.addEventListener('objectChange', () => fromHandle(false));
+  const handle = createHandle(view, (final) => fromHandle(final));
 
   const segment = () => s.model.segments.find((g) => g.name === s.segment);
   const editable = () => segment() && segment().source.kind === 'ssvs';
@@ -96,25 +85,18 @@ export function createEditor(view, layer, model, text, at, showPairs) {
     const frame = frameGroup();
     const e = editable() && s.entries[s.entry];
     if (!frame || !e) {
-      gizmo.detach();
-      handle.visible = false;
+      handle.hide();
       return;
     }
-    frame.updateMatrixWorld(true);
-    const v = vertices(e)[Math.min(s.vertex, vertices(e).length - 1)];
-    const local = new THREE.Vector3(...v);
-    if (s.mode === 'radius') local.x += e.radius;
-    handle.position.copy(frame.localToWorld(local));
-    handle.visible = true;
-    gizmo.attach(handle);
-    gizmo.showY = gizmo.showZ = s.mode !== 'radius';
+    const vs = vertices(e);
+    handle.place(frame, vs[Math.min(s.vertex, vs.length - 1)], e.radius, s.mode === 'radius');
   }
 
   function fromHandle(final) {
     const frame = frameGroup();
     const e = editable() && s.entries[s.entry];
     if (!frame || !e) return;
-    const local = frame.worldToLocal(handle.position.clone());
+    const local = handle.local(frame);
     const round = (x) => Math.round(x * 1e4) / 1e4;
     const vs = vertices(e);
     const k = Math.min(s.vertex, vs.length - 1);
@@ -129,75 +111,21 @@ export function createEditor(view, layer, model, text, at, showPairs) {
     if (final || !s.busy) check();
   }
 
-  function field(value, set) {
-    const input = document.createElement('input');
-    input.type = 'number';
-    input.step = '0.005';
-    input.value = String(value);
-    input.onchange = () => {
-      set(input.value === '' ? NaN : Number(input.value));
-      check();
-    };
-    return input;
+  function pick(i, j) {
+    s.entry = i;
+    s.vertex = j;
+    renderEntries();
+    placeHandle();
   }
 
   function renderEntries() {
-    const box = $('entries');
-    box.replaceChildren();
-    if (!editable()) return;
-    s.entries.forEach((e, i) => {
-      const div = document.createElement('div');
-      div.className = `entry${i === s.entry ? ' selected' : ''}`;
-      div.dataset.index = String(i);
-      div.onclick = () => { if (s.entry !== i) { s.entry = i; s.vertex = 0; renderEntries(); placeHandle(); } };
-      const title = document.createElement('div');
-      title.textContent = `${i}: ${kindOf(e)}${e.mirror_copy ? ` (+ copy mirrored about ${e.mirror_copy})` : ''}`;
-      div.append(title);
-      vertices(e).forEach((v, j) => {
-        const row = document.createElement('div');
-        const label = document.createElement('span');
-        label.className = `vertex${i === s.entry && j === s.vertex ? ' active' : ''}`;
-        label.textContent = `v${j} `;
-        label.onclick = () => { s.entry = i; s.vertex = j; renderEntries(); placeHandle(); };
-        row.append(label, ...v.map((x, a) => field(x, (y) => { v[a] = y; })));
-        div.append(row);
-      });
-      const r = document.createElement('div');
-      r.append('radius ', field(e.radius, (y) => { e.radius = y; }));
-      r.querySelector('input').className = 'radius';
-      div.append(r);
-      box.append(div);
-    });
+    renderEntriesInto($('entries'), editable() ? s : { entries: null }, pick, () => check());
   }
 
-  // The selected segment's pairs from the file's `pairs = [...]` array: remove one, add one.
   function renderPairs() {
-    const box = $('segment-pairs');
-    box.replaceChildren();
     const list = s.model.pair_list;
-    if (!s.segment) return;
-    if (!list) {
-      box.textContent = 'pairs: written as [[pair]] tables, edit them in the file';
-      return;
-    }
-    const edit = (pairs) => check(s.text.slice(0, list.span[0]) + pairsText(pairs) + s.text.slice(list.span[1]));
-    box.append('pairs: ');
-    list.pairs.forEach(([a, b], i) => {
-      if (a !== s.segment && b !== s.segment) return;
-      const x = document.createElement('button');
-      x.className = 'pair';
-      x.title = 'remove this pair';
-      x.textContent = `${a === s.segment ? b : a} ×`;
-      x.onclick = () => edit(list.pairs.filter((_, j) => j !== i));
-      box.append(x);
-    });
-    const other = document.createElement('select');
-    other.id = 'pair-with';
-    s.model.segments.filter((g) => g.name !== s.segment).forEach((g) => other.add(new Option(g.name, g.name)));
-    const add = document.createElement('button');
-    add.textContent = 'add pair';
-    add.onclick = () => edit([...list.pairs, [s.segment, other.value]]);
-    box.append(' with ', other, add);
+    renderPairsInto($('segment-pairs'), s.model, s.segment, (pairs) =>
+      check(s.text.slice(0, list.span[0]) + pairsText(pairs) + s.text.slice(list.span[1])));
   }
 
   function select(name) {
@@ -251,7 +179,7 @@ export function createEditor(view, layer, model, text, at, showPairs) {
     refresh: placeHandle,
     // Screen position of the handle (page pixels), for tests and tutorials.
     handleScreen() {
-      const p = handle.position.clone().project(view.camera);
+      const p = handle.marker.position.clone().project(view.camera);
       const rect = view.renderer.domElement.getBoundingClientRect();
       return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
     },
