@@ -178,8 +178,10 @@ export function createEditor(view, layer, model, text, at, showPairs) {
     select: (name) => { list.value = name; select(name); },
     refresh: placeHandle,
     // Screen position of the handle (page pixels), for tests and tutorials.
-    handleScreen() {
-      const p = handle.marker.position.clone().project(view.camera);
+    // `offset` (metres, world axes) moves the point from the handle.
+    handleScreen(offset = [0, 0, 0]) {
+      const p = handle.marker.position.clone().add(new handle.marker.position.constructor(...offset))
+        .project(view.camera);
       const rect = view.renderer.domElement.getBoundingClientRect();
       return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
     },

@@ -157,6 +157,31 @@ test('a handle drag moves the vertex and is saved', async () => {
   assert.match(ssvModel(VIEW_SSV), /closest pair: /);
 });
 
+test('the radius handle drags the radius', async () => {
+  await page.locator('input[name=handle][value=radius]').check();
+  const before = await page.evaluate(() => window.bipedView.editor.state.entries[0].radius);
+  // The handle's x arrow on screen: from the marker towards the body's x axis.
+  const { from, dir } = await page.evaluate(() => {
+    const ed = window.bipedView.editor;
+    const a = ed.handleScreen();
+    const b = ed.handleScreen([0.05, 0, 0]);
+    const n = Math.hypot(b.x - a.x, b.y - a.y);
+    return { from: a, dir: { x: (b.x - a.x) / n, y: (b.y - a.y) / n } };
+  });
+  const grab = { x: from.x + 30 * dir.x, y: from.y + 30 * dir.y };
+  await page.mouse.move(grab.x, grab.y);
+  await page.mouse.down();
+  for (let i = 1; i <= 10; i += 1) await page.mouse.move(grab.x + 3 * i * dir.x, grab.y + 3 * i * dir.y);
+  await page.mouse.up();
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'unsaved changes');
+  const after = await page.evaluate(() => window.bipedView.editor.state.entries[0].radius);
+  assert.ok(after > before, `radius ${before} -> ${after}`);
+  await page.locator('input[name=handle][value=vertex]').check();
+  await page.locator('#save').click();
+  await page.waitForFunction(() => document.body.dataset.saved === '3');
+  assert.match(readFileSync(VIEW_SSV, 'utf8'), new RegExp(`radius = ${String(after).replace('.', '\\.')}`));
+});
+
 test('entries are created, copied, mirrored and deleted, a pair added, and saved', async () => {
   const checked = async (action) => {
     const seq = await page.evaluate(() => window.bipedView.editor.state.seq);
@@ -186,7 +211,7 @@ test('entries are created, copied, mirrored and deleted, a pair added, and saved
   await page.locator('#pair-with').selectOption('l_upper_arm');
   await checked(() => page.locator('#segment-pairs button', { hasText: 'add pair' }).click());
   await page.locator('#save').click();
-  await page.waitForFunction(() => document.body.dataset.saved === '3');
+  await page.waitForFunction(() => document.body.dataset.saved === '4');
   const report = JSON.parse(execFileSync(BIPED, ['ssv', 'model', VIEW_SSV, '--json'], { encoding: 'utf8' }));
   assert.ok(report.pairs.some((p) => p.a === 'r_forearm' && p.b === 'l_upper_arm'), 'the new pair is evaluated');
 });
