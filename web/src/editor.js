@@ -5,7 +5,7 @@
 import { checkSsv, putSsv } from './api.js';
 import { mirrored, pairsText, splice, vertices } from './format.js';
 import { createHandle } from './handle.js';
-import { renderEntries as renderEntriesInto, renderPairs as renderPairsInto } from './panels.js';
+import { renderEntries as renderEntriesInto, renderKeep, renderPairs as renderPairsInto } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
 const TEMPLATES = {
@@ -122,7 +122,14 @@ export function createEditor(view, layer, model, text, at, showPairs) {
     renderEntriesInto($('entries'), editable() ? s : { entries: null }, pick, () => check());
   }
 
+  function renderVersion() {
+    const g = segment();
+    renderKeep($('keep'), s.model, g, (keep) =>
+      check(s.text.slice(0, g.source.span[0]) + `[${keep.join(', ')}]` + s.text.slice(g.source.span[1])));
+  }
+
   function renderPairs() {
+    renderVersion();
     const list = s.model.pair_list;
     renderPairsInto($('segment-pairs'), s.model, s.segment, (pairs) =>
       check(s.text.slice(0, list.span[0]) + pairsText(pairs) + s.text.slice(list.span[1])));
@@ -135,7 +142,8 @@ export function createEditor(view, layer, model, text, at, showPairs) {
     s.entry = 0;
     s.vertex = 0;
     const info = !g ? '' : g.source.kind === 'ssvs' ? `on body ${s.model.bodies[g.body].name}, ${g.ssvs.length} SSVs`
-      : `${g.source.kind.replace('_', ' ')} ${g.source.of}: edit that segment`;
+      : g.source.kind === 'version_of' ? `version of ${g.source.of}: the SSVs it keeps below`
+        : `mirror of ${g.source.of}: edit that segment`;
     $('segment-info').textContent = info;
     renderEntries();
     renderPairs();

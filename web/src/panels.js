@@ -74,3 +74,26 @@ export function renderPairs(box, model, name, edit) {
   add.onclick = () => edit([...list.pairs, [name, other.value]]);
   box.append(' with ', other, add);
 }
+
+// A version segment's kept SSVs: one checkbox per SSV of the full segment; `edit(keep)`
+// receives the new index list.
+export function renderKeep(box, model, g, edit) {
+  box.replaceChildren();
+  if (!g || g.source.kind !== 'version_of' || !g.source.span) return;
+  const full = model.segments.find((f) => f.name === g.source.of);
+  if (!full) return;
+  box.append(`keeps of ${full.name}: `);
+  full.ssvs.forEach((v, i) => {
+    const label = document.createElement('label');
+    const box1 = document.createElement('input');
+    box1.type = 'checkbox';
+    box1.dataset.keep = String(i);
+    box1.checked = g.source.keep.includes(i);
+    box1.onchange = () => {
+      const keep = full.ssvs.map((_, j) => j).filter((j) => (j === i ? box1.checked : g.source.keep.includes(j)));
+      edit(keep);
+    };
+    label.append(box1, `${i} ${v.kind} `);
+    box.append(label);
+  });
+}

@@ -216,7 +216,22 @@ test('entries are created, copied, mirrored and deleted, a pair added, and saved
   assert.ok(report.pairs.some((p) => p.a === 'r_forearm' && p.b === 'l_upper_arm'), 'the new pair is evaluated');
 });
 
+test('a version keeps fewer SSVs after unticking one, and is saved', async () => {
+  await page.locator('#segment').selectOption('r_thigh_inner');
+  const kept = () => page.evaluate(() => window.bipedView.editor.state.model.segments
+    .find((g) => g.name === 'r_thigh_inner').source.keep);
+  const before = await kept();
+  await page.locator('#keep input[data-keep="3"]').uncheck();
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'unsaved changes');
+  assert.deepEqual(await kept(), before.filter((k) => k !== 3));
+  await page.locator('#save').click();
+  await page.waitForFunction(() => document.body.dataset.saved === '5');
+  assert.match(readFileSync(VIEW_SSV, 'utf8'), new RegExp(`keep = \\[${before.filter((k) => k !== 3).join(', ')}\\]`));
+  assert.match(ssvModel(VIEW_SSV), /closest pair: /);
+});
+
 test('a bad edit shows the located error and leaves the file as it was', async () => {
+  await page.locator('#segment').selectOption('pelvis');
   const saved = readFileSync(VIEW_SSV);
   refusalExpected = true;
   const radius = page.locator('.entry[data-index="0"] input.radius');

@@ -45,6 +45,10 @@ pub enum SegmentSource {
     VersionOf {
         /// The full segment.
         of: String,
+        /// The kept SSV indices (of the full segment's expanded list).
+        keep: Vec<i64>,
+        /// Where the `keep` array is in the text (UTF-16 indices), `null` if it is missing.
+        span: Option<[usize; 2]>,
     },
     /// Not found in the text (does not happen for a file that loaded).
     Unknown,
@@ -87,6 +91,7 @@ struct SourceSegment {
     ssvs: Option<Spanned<Vec<EntryJson>>>,
     mirror_of: Option<String>,
     version_of: Option<String>,
+    keep: Option<Spanned<Vec<i64>>>,
 }
 
 /// Every segment's name and source, in file order (empty if the text does not parse).
@@ -104,7 +109,11 @@ pub fn segment_sources(text: &str) -> Vec<(String, SegmentSource)> {
                 }
             }
             (None, Some(of), _) => SegmentSource::MirrorOf { of },
-            (None, None, Some(of)) => SegmentSource::VersionOf { of },
+            (None, None, Some(of)) => SegmentSource::VersionOf {
+                span: s.keep.as_ref().map(|k| utf16_span(text, k.span())),
+                keep: s.keep.map(Spanned::into_inner).unwrap_or_default(),
+                of,
+            },
             (None, None, None) => SegmentSource::Unknown,
         };
         (s.name, src)

@@ -80,6 +80,25 @@ fn scene_has_lola_boxes_and_every_segment() {
     assert!(array.starts_with('[') && array.ends_with(']'), "{array}");
     let entries = explicit["source"]["entries"].as_array().unwrap();
     assert_eq!(array.matches("radius").count(), entries.len());
+    // A version's `keep` span holds its kept indices (lola_ssv.toml: r_thigh_inner keeps 0, 1, 3, 4).
+    let inner = segments
+        .iter()
+        .find(|s| s["name"] == "r_thigh_inner")
+        .unwrap();
+    assert_eq!(inner["source"]["kind"], "version_of");
+    let span = &inner["source"]["span"];
+    let (a, b) = (
+        span[0].as_u64().unwrap() as usize,
+        span[1].as_u64().unwrap() as usize,
+    );
+    let keep: Vec<i64> = String::from_utf16(&utf16[a..b])
+        .unwrap()
+        .trim_matches(['[', ']'])
+        .split(',')
+        .map(|k| k.trim().parse().unwrap())
+        .collect();
+    assert_eq!(serde_json::json!(keep), inner["source"]["keep"]);
+    assert_eq!(inner["ssvs"].as_array().unwrap().len(), keep.len());
     // The pairs array: its span holds exactly the pairs it lists, all of them the model's.
     let list = &scene["ssv"]["pair_list"];
     let (a, b) = (
