@@ -20,7 +20,7 @@ pub struct ViewArgs {
     /// IP address to listen on (or `localhost`); another than 127.0.0.1 serves other machines.
     #[arg(long, default_value = "127.0.0.1", allow_hyphen_values = true)]
     host: String,
-    /// Show the Lola-like biped: `type2` or `type3`.
+    /// Show the Lola-like biped: `type2` or `type3` (without --urdf: type2).
     #[arg(long, value_name = "TYPE", conflicts_with = "urdf")]
     lola: Option<LolaType>,
     /// Show a URDF robot (its `<visual>` geometry).

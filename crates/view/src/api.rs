@@ -14,7 +14,7 @@ use nalgebra::Isometry3;
 use serde::Deserialize;
 use serde_json::{json, Value};
 use std::path::PathBuf;
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, PoisonError};
 
 /// Most frames one `GET /api/recording` answers.
 pub const MAX_PAGE: usize = 2000;
@@ -135,7 +135,12 @@ pub fn router(state: Shared) -> Router {
 }
 
 async fn scene(State(s): State<Shared>) -> Json<Value> {
-    let ssv = s.ssv.lock().unwrap().as_ref().map(CollisionFile::to_json);
+    let ssv = s
+        .ssv
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .as_ref()
+        .map(CollisionFile::to_json);
     let neutral: Vec<PoseJson> = s.neutral.iter().map(PoseJson::from).collect();
     let names: Vec<&str> = s.recordings.iter().map(|r| r.name.as_str()).collect();
     Json(json!({
@@ -154,7 +159,7 @@ fn no_ssv() -> ApiError {
 }
 
 async fn get_ssv(State(s): State<Shared>) -> Result<Response, ApiError> {
-    let guard = s.ssv.lock().unwrap();
+    let guard = s.ssv.lock().unwrap_or_else(PoisonError::into_inner);
     let file = guard.as_ref().ok_or_else(no_ssv)?;
     let text = file.text.clone();
     Ok(([(header::CONTENT_TYPE, "text/plain; charset=utf-8")], text).into_response())
@@ -171,7 +176,7 @@ fn utf8(body: &Bytes) -> Result<String, ApiError> {
 
 async fn put_ssv(State(s): State<Shared>, body: Bytes) -> Result<Json<Value>, ApiError> {
     let text = utf8(&body)?;
-    let mut guard = s.ssv.lock().unwrap();
+    let mut guard = s.ssv.lock().unwrap_or_else(PoisonError::into_inner);
     let file = guard.as_mut().ok_or_else(no_ssv)?;
     match file.replace(text, &s.robot) {
         Ok(()) => Ok(Json(json!({ "ssv": file.to_json() }))),
@@ -196,7 +201,7 @@ async fn check_ssv(
 ) -> Result<Json<Value>, ApiError> {
     let text = utf8(&body)?;
     let path = {
-        let guard = s.ssv.lock().unwrap();
+        let guard = s.ssv.lock().unwrap_or_else(PoisonError::into_inner);
         guard.as_ref().ok_or_else(no_ssv)?.path.clone()
     };
     let mut candidate =
@@ -211,7 +216,7 @@ async fn distances(
     Query(q): Query<FrameQuery>,
 ) -> Result<Json<Value>, ApiError> {
     let poses = s.poses(q.recording.as_deref(), q.frame)?;
-    let mut guard = s.ssv.lock().unwrap();
+    let mut guard = s.ssv.lock().unwrap_or_else(PoisonError::into_inner);
     let file = guard.as_mut().ok_or_else(no_ssv)?;
     let pairs = file.distances(poses).map_err(ApiError::invalid)?;
     let d_a = file.loaded.model.activation_distance();
