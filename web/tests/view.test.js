@@ -97,6 +97,17 @@ test('the page loads and the robot renders', async () => {
   await shot('robot.png');
   const px = await canvasPixels();
   assert.ok(distinctColours(px) > 50, `the viewport is nearly blank (${distinctColours(px)} colours)`);
+  // Without the robot and its SSVs the picture is the ground and the sky only: they are
+  // what covers a good share of the viewport.
+  await page.locator('#show-robot').uncheck();
+  await page.locator('#show-ssv').uncheck();
+  await page.waitForTimeout(300);
+  const empty = await canvasPixels();
+  await page.locator('#show-robot').check();
+  await page.locator('#show-ssv').check();
+  await page.waitForTimeout(300);
+  const share = changedShare(empty, await canvasPixels());
+  assert.ok(share > 0.02, `the robot covers only ${(share * 100).toFixed(2)} % of the viewport`);
   const pairs = await page.locator('#pairs li').count();
   assert.ok(pairs > 0, 'closest pairs are listed');
 });
