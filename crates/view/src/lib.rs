@@ -40,6 +40,7 @@ pub mod recording;
 pub mod robot;
 mod server;
 pub mod source;
+mod urdf;
 
 pub use api::{AppState, ViewConfig};
 pub use robot::{Robot, RobotSource};

@@ -320,6 +320,12 @@ fn check_answers_distances_of_a_candidate_without_writing() {
         min(&answer),
         min(&before)
     );
+    let (status, err) = server.json("GET", "/api/distances?frame=3", b"");
+    assert_eq!(status, 404);
+    assert_eq!(
+        err["error"],
+        "no recording: start biped view with --recording DIR"
+    );
     let (bad, line) = with_first_radius(&original, "-1");
     let (status, err) = server.json("POST", "/api/ssv/check", bad.as_bytes());
     assert_eq!(status, 422);

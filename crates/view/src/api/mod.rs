@@ -1,5 +1,9 @@
 //! The JSON API of the page (documented in the crate root) over the loaded state.
 
+mod recording_page;
+
+pub use recording_page::MAX_PAGE;
+
 use crate::collision::CollisionFile;
 use crate::recording::{self, Recording};
 use crate::robot::{PoseJson, Robot, RobotSource};
@@ -11,13 +15,11 @@ use axum::response::{IntoResponse, Response};
 use axum::routing::get;
 use axum::{Json, Router};
 use nalgebra::Isometry3;
+use recording_page::recording_page;
 use serde::Deserialize;
 use serde_json::{json, Value};
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex, PoisonError};
-
-/// Most frames one `GET /api/recording` answers.
-pub const MAX_PAGE: usize = 2000;
 
 /// What `biped view` shows.
 #[derive(Debug, Clone)]
@@ -68,7 +70,7 @@ impl AppState {
         })
     }
 
-    fn recording(&self, name: Option<&str>) -> Result<Option<&Recording>, ApiError> {
+    pub(super) fn recording(&self, name: Option<&str>) -> Result<Option<&Recording>, ApiError> {
         match name {
             None => Ok(self.recordings.first()),
             Some(n) => self
@@ -86,9 +88,10 @@ impl AppState {
         name: Option<&str>,
         frame: Option<usize>,
     ) -> Result<&[Isometry3<f64>], ApiError> {
-        let (Some(k), Some(rec)) = (frame, self.recording(name)?) else {
+        let Some(k) = frame else {
             return Ok(&self.neutral);
         };
+        let rec = self.recording(name)?.ok_or_else(no_recording)?;
         rec.poses.get(k).map(Vec::as_slice).ok_or_else(|| {
             let n = rec.poses.len();
             ApiError::bad(format!(
@@ -102,10 +105,10 @@ impl AppState {
 pub struct ApiError(StatusCode, String);
 
 impl ApiError {
-    fn bad(msg: String) -> Self {
+    pub(super) fn bad(msg: String) -> Self {
         Self(StatusCode::BAD_REQUEST, msg)
     }
-    fn not_found(msg: String) -> Self {
+    pub(super) fn not_found(msg: String) -> Self {
         Self(StatusCode::NOT_FOUND, msg)
     }
     fn invalid(e: ViewError) -> Self {
@@ -119,7 +122,7 @@ impl IntoResponse for ApiError {
     }
 }
 
-type Shared = Arc<AppState>;
+pub(super) type Shared = Arc<AppState>;
 
 /// The routes of the API and the page.
 pub fn router(state: Shared) -> Router {
@@ -152,6 +155,10 @@ async fn scene(State(s): State<Shared>) -> Json<Value> {
         "recordings": names,
         "warnings": s.robot.warnings,
     }))
+}
+
+pub(super) fn no_recording() -> ApiError {
+    ApiError::not_found("no recording: start biped view with --recording DIR".into())
 }
 
 fn no_ssv() -> ApiError {
@@ -221,75 +228,6 @@ async fn distances(
     let pairs = file.distances(poses).map_err(ApiError::invalid)?;
     let d_a = file.loaded.model.activation_distance();
     Ok(Json(json!({ "activation_distance": d_a, "pairs": pairs })))
-}
-
-/// The page of frames asked for.
-#[derive(Deserialize)]
-struct PageQuery {
-    name: Option<String>,
-    from: Option<usize>,
-    count: Option<usize>,
-    signals: Option<String>,
-}
-
-async fn recording_page(
-    State(s): State<Shared>,
-    Query(q): Query<PageQuery>,
-) -> Result<Json<Value>, ApiError> {
-    let rec = s.recording(q.name.as_deref())?.ok_or_else(|| {
-        ApiError::not_found("no recording: start biped view with --recording DIR".into())
-    })?;
-    let n = rec.time.len();
-    let from = q.from.unwrap_or(0);
-    if from > n {
-        return Err(ApiError::bad(format!(
-            "from: {from} is past the last frame ({n} frames)"
-        )));
-    }
-    let count = q.count.unwrap_or(MAX_PAGE).min(MAX_PAGE).min(n - from);
-    let frames = from..from + count;
-    let poses: Vec<Vec<[f32; 7]>> = rec.poses[frames.clone()]
-        .iter()
-        .map(|f| f.iter().map(pose7).collect())
-        .collect();
-    let mut signals = serde_json::Map::new();
-    for name in q
-        .signals
-        .iter()
-        .flat_map(|s| s.split(','))
-        .filter(|s| !s.is_empty())
-    {
-        let series = rec.series(name).ok_or_else(|| {
-            ApiError::bad(format!(
-                "signals: no column `{name}` in {}",
-                rec.file.display()
-            ))
-        })?;
-        signals.insert(name.to_string(), json!(series[frames.clone()]));
-    }
-    let markers = crate::markers::markers(rec, frames.clone());
-    Ok(Json(json!({
-        "names": s.recordings.iter().map(|r| &r.name).collect::<Vec<_>>(),
-        "name": rec.name,
-        "frames": n,
-        "time": rec.time,
-        "columns": rec.columns,
-        "from": from,
-        "count": count,
-        "next": (from + count < n).then_some(from + count),
-        "poses": poses,
-        "com": markers.com,
-        "zmp": markers.zmp,
-        "forces": markers.forces,
-        "signals": signals,
-    })))
-}
-
-/// `[x, y, z, qx, qy, qz, qw]` in single precision (what a screen needs, half the text).
-fn pose7(p: &Isometry3<f64>) -> [f32; 7] {
-    let t = p.translation.vector;
-    let q = p.rotation.quaternion();
-    [t.x, t.y, t.z, q.i, q.j, q.k, q.w].map(|v| v as f32)
 }
 
 async fn mesh(State(s): State<Shared>, UrlPath(k): UrlPath<usize>) -> Result<Response, ApiError> {
