@@ -35,6 +35,7 @@ pub mod api;
 pub mod collision;
 pub mod csv;
 mod files;
+mod ground;
 pub mod markers;
 pub mod recording;
 pub mod robot;

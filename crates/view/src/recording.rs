@@ -174,7 +174,7 @@ fn normalize_quaternions(model: &Model, q: &mut DVector<f64>) {
 }
 
 /// The world poses of every body at `q = neutral`; a floating robot is lifted so that its
-/// lowest body frame is at the ground, `z = 0`.
+/// lowest point (of its drawn geometry and its body frames) is at the ground, `z = 0`.
 pub fn neutral_poses(robot: &Robot) -> Result<Vec<Isometry3<f64>>, ViewError> {
     let model = &robot.model;
     let mut data = Data::new(model);
@@ -190,8 +190,8 @@ pub fn neutral_poses(robot: &Robot) -> Result<Vec<Isometry3<f64>>, ViewError> {
     };
     place(&mut data, &q)?;
     if let Some(&root) = floating.first() {
-        let low = (0..model.nbodies()).map(|b| data.body_pose(b).translation.z);
-        let low = low.fold(f64::INFINITY, f64::min);
+        let poses: Vec<_> = (0..model.nbodies()).map(|b| data.body_pose(b)).collect();
+        let low = crate::ground::lowest_point(robot, &poses);
         if low.is_finite() {
             q[root + 2] -= low;
             place(&mut data, &q)?;

@@ -400,9 +400,12 @@ fn urdf_visuals_are_placed_on_their_bodies_and_meshes_served() {
         .as_str()
         .unwrap()
         .contains("link \"toe\": drawn from its <collision>")));
-    // The floating robot is lifted so that its lowest body frame (the leg) is on the ground.
+    // The floating robot is lifted so that its lowest point is on the ground: the STL's
+    // lowest vertex, z = 0 scaled by 2, is at the leg frame; the toe's sphere (merged into the
+    // leg, 0.4 m below its frame, radius 0.04) is lower: the leg frame stands at 0.44 m.
     let leg_index = bodies.iter().position(|b| b["name"] == "leg").unwrap();
-    assert_eq!(scene["neutral"][leg_index]["position"][2], 0.0);
+    let z = scene["neutral"][leg_index]["position"][2].as_f64().unwrap();
+    assert!((z - 0.44).abs() < 1e-12, "leg frame at z = {z}");
     let (status, page) = server.request("GET", "/", b"");
     assert_eq!(status, 503);
     assert!(String::from_utf8_lossy(&page).contains("npm ci"));
