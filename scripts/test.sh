@@ -26,6 +26,7 @@ export PATH="$venv/bin:$PATH"  # the maturin build backend runs the venv's `matu
 # dependency, numpy, is installed above).
 "$venv/bin/pip" install -q --no-build-isolation --force-reinstall --no-deps ./python
 BIPED_REQUIRE_CLI=1 "$venv/bin/python" -m pytest -q python/tests
+"$root/scripts/test_view.sh"  # `biped view` in a real browser (chromium, npm)
 
 # Ray binds to the machine's address: its cluster test runs where loopback is the only
 # network (a namespace of its own; as root, or mapped to root in a user namespace).

@@ -34,6 +34,8 @@ enum Command {
     Simulate(Box<cli::simulate::SimulateArgs>),
     /// Walk Lola with the whole-body IK and compare the arm methods (thesis ch. 7).
     Walk(cli::walk::WalkArgs),
+    /// Serve the browser viewer and SSV modelling tool (robot, collision model, recordings).
+    View(cli::view::ViewArgs),
     /// Benchmarks of whole capabilities.
     #[command(subcommand)]
     Bench(cli::BenchCommand),
@@ -51,6 +53,7 @@ fn main() -> ExitCode {
         Command::Calibrate(args) => cli::calibrate::run(args),
         Command::Simulate(args) => cli::simulate::run(*args),
         Command::Walk(args) => cli::walk::run(args),
+        Command::View(args) => cli::view::run(args),
         Command::Bench(cmd) => cli::run_bench(cmd),
     };
     match result {

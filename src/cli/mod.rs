@@ -12,6 +12,7 @@ pub mod outdir;
 pub mod range;
 pub mod simulate;
 pub mod ssv;
+pub mod view;
 pub mod walk;
 pub mod words;
 
