@@ -2,7 +2,8 @@
 # Everything the project's tests need, from a clean clone with only the Rust toolchain and
 # python3: the Rust test suite (release profile), then the Python package `biped` built into
 # a venv under the workspace's target dir and tested with pytest against the CLI just built,
-# and the Ray sweeps on a two-node cluster in a network namespace with loopback only.
+# the viewer in a real browser (scripts/test_view.sh: chromium, npm), and the Ray sweeps on a
+# two-node cluster in a network namespace with loopback only.
 # Usage: scripts/test.sh   (CARGO_TARGET_DIR is honoured; the venv goes under it)
 set -euo pipefail
 start=$(date +%s)
@@ -42,4 +43,4 @@ else
 fi
 
 end=$(date +%s)
-echo "scripts/test.sh: all passed in $((end - start)) s (cargo test $((rust_done - start)) s, Python $((end - rust_done)) s)"
+echo "scripts/test.sh: all passed in $((end - start)) s (cargo test $((rust_done - start)) s, Python, browser and Ray $((end - rust_done)) s)"
