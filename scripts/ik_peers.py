@@ -9,8 +9,10 @@ in a 1 kHz walk). One timed step = set the targets, build and solve the QP (daqp
 mink, PlaCo's own solver), integrate the velocity over dt = 1 ms (PlaCo: solve(True) + kinematics). Joint limits: each library's configuration limit.
 Prints one JSON object per library with median and p99 step times in microseconds.
 
-Usage: $PEERS_PY scripts/ik_peers.py G1.urdf MESHDIR [--steps 2000]
-       (pip install pin-pink mink placo "qpsolvers[daqp]" into the peers venv first)
+Usage: $PEERS_PY scripts/ik_peers.py G1.urdf MESHDIR [--steps 2000] [--peers pink,mink,placo]
+       (pip install pin-pink mink placo "qpsolvers[daqp]" into the peers venv first; PlaCo
+       pins its own Pinocchio: where it conflicts, give it a venv of its own and run
+       `--peers placo` with that venv's python)
 """
 import argparse
 import importlib.metadata
@@ -156,9 +158,17 @@ def main():
     ap.add_argument("urdf")
     ap.add_argument("meshdir")
     ap.add_argument("--steps", type=int, default=2000)
+    ap.add_argument("--peers", default="pink,mink,placo",
+                    help="comma-separated subset of pink, mink, placo, run in that order")
     args = ap.parse_args()
-    for run in (run_pink, run_mink, run_placo):
-        print(json.dumps(run(args.urdf, args.meshdir, args.steps)))
+    runs = {"pink": run_pink, "mink": run_mink, "placo": run_placo}
+    chosen = [p.strip() for p in args.peers.split(",") if p.strip()]
+    unknown = [p for p in chosen if p not in runs]
+    if unknown or not chosen:
+        ap.error(f"--peers: unknown peer {unknown[0]!r} (choose from pink, mink, placo)"
+                 if unknown else "--peers: no peer given")
+    for name in chosen:
+        print(json.dumps(runs[name](args.urdf, args.meshdir, args.steps)), flush=True)
 
 
 if __name__ == "__main__":
