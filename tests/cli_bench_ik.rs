@@ -194,3 +194,14 @@ fn an_ik_that_does_not_track_fails_the_bench() {
     assert_eq!(out.status.code(), Some(1));
     assert!(stderr(&out).contains("did not track"), "{}", stderr(&out));
 }
+
+#[test]
+fn steps_out_of_range_is_a_usage_error_naming_the_option() {
+    for steps in ["0", "10000001", "-3"] {
+        let out = run(&["bench", "ik", "--robot", "g1", "--steps", steps], "");
+        assert_eq!(out.status.code(), Some(2), "--steps {steps}");
+        let err = stderr(&out);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains("--steps"), "{err}");
+    }
+}

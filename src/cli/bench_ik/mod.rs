@@ -29,8 +29,13 @@ pub struct BenchIkArgs {
     /// Robot: a bundled description (`g1`, `talos`) or a description FILE.toml.
     #[arg(long, value_name = "NAME|FILE.toml")]
     robot: String,
-    /// Number of timed steps (after a warm-up of 100).
-    #[arg(long, default_value_t = 2000, value_parser = clap::value_parser!(u32).range(1..))]
+    /// Number of timed steps (after a warm-up of 100; at most 10^7, the samples are kept).
+    #[arg(
+        long,
+        default_value_t = 2000,
+        allow_hyphen_values = true,
+        value_parser = clap::value_parser!(u32).range(1..=10_000_000)
+    )]
     steps: u32,
     /// Pull towards the start pose by a soft posture task (`task`, as the peers) or by the
     /// comfort term in the null space (`comfort`, no task rows).
@@ -196,4 +201,18 @@ pub fn run(args: BenchIkArgs) -> CliResult {
         )?;
     }
     Ok(ExitCode::SUCCESS)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::quantile;
+
+    #[test]
+    fn quantiles_interpolate_like_numpy() {
+        // numpy.percentile([1, 2, 3, 4], [50, 99]) = [2.5, 3.97]
+        let v = [1.0, 2.0, 3.0, 4.0];
+        assert!((quantile(&v, 0.5) - 2.5).abs() < 1e-12);
+        assert!((quantile(&v, 0.99) - 3.97).abs() < 1e-12);
+        assert_eq!(quantile(&[7.0], 0.99), 7.0);
+    }
 }

@@ -229,3 +229,29 @@ fn add_full_terms(robot: &Robot, ik: &mut Ik) -> Result<(), String> {
     ik.compensate_momentum(&reducing, CompensationLaw::Normalised)
         .map_err(|e| format!("{file}: {e}"))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn targets_follow_the_peer_script() {
+        let (c0, f0) = (Vector3::new(0.1, 0.2, 0.3), Vector3::new(-0.1, 0.1, -0.7));
+        // t = 0.2 s: a quarter of the sway period 1.6 s is 0.4 s, a quarter of the step 0.8 s
+        let (c, f) = targets(200, &c0, &f0);
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        assert!((c - c0 - Vector3::new(0.01, 0.04 * s, 0.0)).norm() < 1e-12);
+        assert!((f - f0 - Vector3::new(0.025, 0.0, 0.05 * s)).norm() < 1e-12);
+        // t = 1.2 s: sway at its right extreme, the second step half done
+        let (c, f) = targets(1200, &c0, &f0);
+        assert!((c - c0 - Vector3::new(0.06, -0.04, 0.0)).norm() < 1e-12);
+        assert!((f - f0 - Vector3::new(0.05, 0.0, 0.05)).norm() < 1e-12);
+    }
+
+    #[test]
+    fn cycles_right_after_a_foot_jump_are_not_tracked() {
+        assert!(settled(0) && settled(799));
+        assert!(!settled(800) && !settled(949));
+        assert!(settled(950) && settled(1599) && !settled(1600));
+    }
+}
