@@ -26,8 +26,8 @@ const LIMIT_SLACK: f64 = 1e-9;
 /// Arguments of `biped bench ik`.
 #[derive(Args)]
 pub struct BenchIkArgs {
-    /// Robot: a bundled description (`g1`, `talos`) or a description FILE.toml.
-    #[arg(long, value_name = "NAME|FILE.toml")]
+    /// Robot: a bundled description (`g1`, `talos`) or the path of a description FILE.toml.
+    #[arg(long, value_name = "NAME")]
     robot: String,
     /// Number of timed steps (after a warm-up of 100; at most 10^7, the samples are kept).
     #[arg(
@@ -39,7 +39,7 @@ pub struct BenchIkArgs {
     steps: u32,
     /// Pull towards the start pose by a soft posture task (`task`, as the peers) or by the
     /// comfort term in the null space (`comfort`, no task rows).
-    #[arg(long, value_enum, default_value = "task")]
+    #[arg(long, value_enum, value_name = "METHOD", default_value = "task")]
     posture: Posture,
     /// Print one JSON line `{"peer_tasks": {"median_us", "p99_us"}, "full": {..}}`.
     #[arg(long)]
