@@ -205,3 +205,35 @@ fn steps_out_of_range_is_a_usage_error_naming_the_option() {
         assert!(err.contains("--steps"), "{err}");
     }
 }
+
+#[test]
+fn a_start_inside_the_limit_margin_may_not_come_closer() {
+    // the left knee starts 0.007 rad above its lower limit -0.087267, inside the IK's margin
+    // of 0.01: the run passes if it never comes closer than that
+    let path = g1_variant("bench_ik_knee_in_margin.toml", |l| {
+        Some(if l.starts_with("left_knee_joint = ") {
+            "left_knee_joint = -0.080267".into()
+        } else {
+            l.into()
+        })
+    });
+    let out = run(
+        &[
+            "bench",
+            "ik",
+            "--robot",
+            &path.display().to_string(),
+            "--steps",
+            "50",
+        ],
+        "",
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = String::from_utf8(out.stdout).unwrap();
+    for line in text.lines().skip(1) {
+        let m: f64 = line.split("joint margin >= ").nth(1).unwrap()[..6]
+            .parse()
+            .unwrap();
+        assert!((0.007 - 1e-9..0.01).contains(&m), "{line}");
+    }
+}

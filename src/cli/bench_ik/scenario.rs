@@ -4,6 +4,7 @@
 //! self-collision avoidance on the robot's SSV model and vertical momentum compensation by the
 //! description's reducing joints.
 
+use super::bounds::JointBounds;
 use biped_control::avoidance::RepulsiveLaw;
 use biped_control::ik::{Ik, StepReport};
 use biped_control::momentum::CompensationLaw;
@@ -75,6 +76,7 @@ pub struct Scenario {
     feet: [(TaskHandle, Frame, Isometry3<f64>); 2],
     com: (TaskHandle, Vector3<f64>),
     pelvis: (Frame, Matrix3<f64>),
+    bounds: JointBounds,
 }
 
 /// Tracking errors of one cycle after its step.
@@ -135,6 +137,7 @@ impl Scenario {
         if set == TaskSet::Full {
             add_full_terms(robot, &mut ik)?;
         }
+        let bounds = JointBounds::new(robot, &ik, &q);
         Ok(Self {
             ik,
             q,
@@ -142,6 +145,7 @@ impl Scenario {
             feet,
             com: (com, com0),
             pelvis: (frame, pelvis),
+            bounds,
         })
     }
 
@@ -192,6 +196,12 @@ impl Scenario {
         Ok(e)
     }
 
+    /// Smallest distance of a joint to its range now, or an error naming the joint that
+    /// came closer than allowed (see [`JointBounds`]).
+    pub fn check_limits(&self, slack: f64) -> Result<f64, String> {
+        self.bounds.check(&self.q, slack)
+    }
+
     /// Largest excess of a joint velocity of the last step over its limit (<= 0: kept).
     pub fn velocity_excess(&self) -> f64 {
         let Some(qdot) = self.ik.velocities() else {
@@ -208,10 +218,11 @@ impl Scenario {
 /// joints; an error if the description has no collision model or no reducing joint.
 fn add_full_terms(robot: &Robot, ik: &mut Ik) -> Result<(), String> {
     let file = &robot.description.file;
-    let collision = robot
-        .collision
-        .as_ref()
-        .ok_or_else(|| format!("{file}: no [collision] model: the full task set needs one"))?;
+    let collision = robot.collision.as_ref().ok_or_else(|| {
+        format!(
+            "{file}: no [collision] model: the full task set needs one (`biped ssv fit` makes one)"
+        )
+    })?;
     let law = RepulsiveLaw::Blended { s0: 1.0, t: 0.5 };
     ik.avoid_self_collision(collision.model.clone(), law, AVOIDANCE_GAIN)
         .map_err(|e| format!("{file}: {e}"))?;
