@@ -9,8 +9,11 @@ in a 1 kHz walk). One timed step = set the targets, build and solve the QP (daqp
 mink, PlaCo's own solver), integrate the velocity over dt = 1 ms (PlaCo: solve(True) + kinematics). Joint limits: each library's configuration limit.
 Prints one JSON object per library with median and p99 step times in microseconds.
 
-Usage: $PEERS_PY scripts/ik_peers.py G1.urdf MESHDIR [--steps 2000]
-       (pip install pin-pink mink placo "qpsolvers[daqp]" into the peers venv first)
+Usage: $PEERS_PY scripts/ik_peers.py G1.urdf MESHDIR [--steps 2000] [--peers pink,mink,placo]
+           [--comfort crates/robots/data/g1.toml]
+       (pip install pin-pink mink placo "qpsolvers[daqp]" into the peers venv first; PlaCo
+       pins its own Pinocchio: where it conflicts, give it a venv of its own and run
+       `--peers placo` with that venv's python)
 """
 import argparse
 import importlib.metadata
@@ -41,7 +44,17 @@ def stats(samples):
     return {"median_us": float(np.median(a)), "p99_us": float(np.percentile(a, 99))}
 
 
-def run_pink(urdf, _meshdir, steps):
+def comfort_joints(path):
+    """`[comfort.joints]` of a biped robot description file (joint name -> value)."""
+    if path is None:
+        return {}
+    import tomllib
+
+    with open(path, "rb") as f:
+        return tomllib.load(f).get("comfort", {}).get("joints", {})
+
+
+def run_pink(urdf, _meshdir, steps, pose):
     import pink
     import pinocchio as pin
     from pink.tasks import ComTask, FrameTask, PostureTask
@@ -50,6 +63,8 @@ def run_pink(urdf, _meshdir, steps):
     data = model.createData()
     q = pin.neutral(model)
     q[2] = 0.75
+    for name, value in pose.items():
+        q[model.joints[model.getJointId(name)].idx_q] = value
     conf = pink.Configuration(model, data, q)
     feet = [FrameTask(f, position_cost=1.0, orientation_cost=1.0) for f in FEET]
     pelvis = FrameTask(PELVIS, position_cost=0.0, orientation_cost=1.0)
@@ -75,14 +90,17 @@ def run_pink(urdf, _meshdir, steps):
     return {"peer": "pink " + importlib.metadata.version("pin-pink"), "nv": model.nv, "final_com_error_m": float(err), **stats(times[100:])}
 
 
-def run_mink(urdf, meshdir, steps):
+def run_mink(urdf, meshdir, steps, pose):
     import mink
 
     from mujoco_stand import load  # the same G1 model as the MuJoCo stand (scripts/)
 
     model = load(urdf, meshdir)
     conf = mink.Configuration(model)
-    conf.update(model.qpos0)
+    q = model.qpos0.copy()
+    for name, value in pose.items():
+        q[model.joint(name).qposadr[0]] = value
+    conf.update(q)
     feet = [
         mink.FrameTask(f, "body", position_cost=1.0, orientation_cost=1.0) for f in FEET
     ]
@@ -108,7 +126,7 @@ def run_mink(urdf, meshdir, steps):
     return {"peer": "mink " + importlib.metadata.version("mink"), "nv": model.nv, "final_com_error_m": float(err), **stats(times[100:])}
 
 
-def run_placo(urdf, _meshdir, steps):
+def run_placo(urdf, _meshdir, steps, pose):
     import placo
 
     # PlaCo loads meshes: give it the kinematic tree only.
@@ -117,6 +135,8 @@ def run_placo(urdf, _meshdir, steps):
     with open(path, "w") as out:
         out.write(text)
     robot = placo.RobotWrapper(path, placo.Flags.ignore_collisions)
+    for name, value in pose.items():
+        robot.set_joint(name, value)
     robot.set_T_world_frame("pelvis", np.array(
         [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0.75], [0, 0, 0, 1]], dtype=float))
     robot.update_kinematics()
@@ -156,9 +176,22 @@ def main():
     ap.add_argument("urdf")
     ap.add_argument("meshdir")
     ap.add_argument("--steps", type=int, default=2000)
+    ap.add_argument("--comfort", metavar="ROBOT.toml",
+                    help="start at the [comfort.joints] pose of a biped robot description "
+                         "(e.g. crates/robots/data/g1.toml, as `biped bench ik`); default: "
+                         "the URDF's zero pose (straight legs)")
+    ap.add_argument("--peers", default="pink,mink,placo",
+                    help="comma-separated subset of pink, mink, placo, run in that order")
     args = ap.parse_args()
-    for run in (run_pink, run_mink, run_placo):
-        print(json.dumps(run(args.urdf, args.meshdir, args.steps)))
+    runs = {"pink": run_pink, "mink": run_mink, "placo": run_placo}
+    chosen = [p.strip() for p in args.peers.split(",") if p.strip()]
+    unknown = [p for p in chosen if p not in runs]
+    if unknown or not chosen:
+        ap.error(f"--peers: unknown peer {unknown[0]!r} (choose from pink, mink, placo)"
+                 if unknown else "--peers: no peer given")
+    pose = comfort_joints(args.comfort)
+    for name in chosen:
+        print(json.dumps(runs[name](args.urdf, args.meshdir, args.steps, pose)), flush=True)
 
 
 if __name__ == "__main__":

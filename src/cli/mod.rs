@@ -1,5 +1,6 @@
 //! Sub-command implementations, one module per capability.
 
+pub mod bench_ik;
 pub mod calibrate;
 pub mod dynamics;
 pub mod files;
@@ -27,11 +28,14 @@ pub type CliResult = Result<ExitCode, Box<dyn std::error::Error>>;
 pub enum BenchCommand {
     /// Median forward-dynamics time per algorithm (and per O(n) pass).
     Dynamics(dynamics::BenchArgs),
+    /// Median and p99 time of one whole-body IK step, peer task set and full set.
+    Ik(bench_ik::BenchIkArgs),
 }
 
 /// Dispatch `biped bench ...`.
 pub fn run_bench(cmd: BenchCommand) -> CliResult {
     match cmd {
         BenchCommand::Dynamics(args) => dynamics::run_bench(args),
+        BenchCommand::Ik(args) => bench_ik::run(args),
     }
 }

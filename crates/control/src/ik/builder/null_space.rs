@@ -75,11 +75,23 @@ impl NullSpace {
         qdot_prev: &DVector<f64>,
     ) -> Result<Option<f64>, IkError> {
         self.grad.fill(0.0);
+        let min_distance = self.evaluate_dynamic_terms(model, q, qdot_prev)?;
+        // after the avoidance term, which scales the gradient by its gain
         if let Some(c) = &self.comfort {
             for &(qi, vi) in &c.joints {
                 self.grad[vi] += c.gain * (q[qi] - c.q0[qi]);
             }
         }
+        Ok(min_distance)
+    }
+
+    /// Adds the avoidance and momentum parts of `y` (those that need the Jacobians).
+    fn evaluate_dynamic_terms(
+        &mut self,
+        model: &Model,
+        q: &DVector<f64>,
+        qdot_prev: &DVector<f64>,
+    ) -> Result<Option<f64>, IkError> {
         if self.avoidance.is_none() && self.momentum.is_none() {
             return Ok(None);
         }
