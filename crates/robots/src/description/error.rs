@@ -109,11 +109,7 @@ pub(super) struct Locator<'a> {
 impl Locator<'_> {
     /// 1-based line of a byte offset.
     pub fn line_of(&self, offset: usize) -> usize {
-        let end = offset.min(self.text.len());
-        1 + self.text.as_bytes()[..end]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count()
+        biped_ssv::format::line_of(self.text, offset)
     }
 
     /// An [`DescriptionError::Invalid`] at `span`.

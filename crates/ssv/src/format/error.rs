@@ -91,6 +91,16 @@ impl fmt::Display for FormatError {
 
 impl std::error::Error for FormatError {}
 
+/// The 1-based line of byte `offset` in `text` (clamped to the text): where a TOML span of a
+/// model or description file starts, for its located errors.
+pub fn line_of(text: &str, offset: usize) -> usize {
+    let end = offset.min(text.len());
+    1 + text.as_bytes()[..end]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+}
+
 /// Builds located errors for one file's text.
 pub(super) struct Locator<'a> {
     pub file: &'a str,
@@ -100,11 +110,7 @@ pub(super) struct Locator<'a> {
 impl Locator<'_> {
     /// 1-based line of a byte offset (clamped to the text).
     pub fn line_of(&self, offset: usize) -> usize {
-        let end = offset.min(self.text.len());
-        1 + self.text.as_bytes()[..end]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count()
+        line_of(self.text, offset)
     }
 
     /// An error at `span` in `field`.

@@ -88,7 +88,7 @@ mod exact;
 mod raw;
 mod write;
 
-pub use error::{FormatError, FormatErrorKind};
+pub use error::{line_of, FormatError, FormatErrorKind};
 
 use crate::model::CollisionModel;
 use error::Locator;
