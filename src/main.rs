@@ -35,6 +35,7 @@ enum Command {
     /// Walk Lola with the whole-body IK and compare the arm methods (thesis ch. 7).
     Walk(cli::walk::WalkArgs),
     /// Serve the browser viewer and SSV modelling tool (robot, collision model, recordings).
+    #[cfg(feature = "view")]
     View(cli::view::ViewArgs),
     /// Benchmarks of whole capabilities.
     #[command(subcommand)]
@@ -53,6 +54,7 @@ fn main() -> ExitCode {
         Command::Calibrate(args) => cli::calibrate::run(args),
         Command::Simulate(args) => cli::simulate::run(*args),
         Command::Walk(args) => cli::walk::run(args),
+        #[cfg(feature = "view")]
         Command::View(args) => cli::view::run(args),
         Command::Bench(cmd) => cli::run_bench(cmd),
     };

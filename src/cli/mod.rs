@@ -13,6 +13,7 @@ pub mod outdir;
 pub mod range;
 pub mod simulate;
 pub mod ssv;
+#[cfg(feature = "view")]
 pub mod view;
 pub mod walk;
 pub mod words;
