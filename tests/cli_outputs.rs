@@ -139,7 +139,12 @@ fn a_failed_run_replaces_the_previous_result_with_a_marked_one() {
     );
     assert_eq!(
         files(&dir),
-        [".biped-output", "signals.csv", "summary.json"],
+        [
+            ".biped-output",
+            "recording.csv.gz",
+            "signals.csv",
+            "summary.json"
+        ],
         "nothing of the previous run is left beside the failed one"
     );
 }

@@ -17,8 +17,8 @@ results are in input order, each what ``simulate`` returns, or the ``BipedError`
 that failed (the others complete).
 
 ``walk(**options)`` runs ``biped walk`` and returns ``(summary, tables)``: the dict of its
-``summary.json`` and its CSV tables by file stem (``"none"``, ``"none_trajectory"``, ...,
-``"dynamic"``), each a dict of arrays. A fall or a violated verdict raises ``BipedError`` with
+``summary.json`` and its CSV tables by file stem (``"none"``, ``"none_trajectory"``,
+``"none_recording"``, ..., ``"dynamic"``, ``"dynamic_recording"``), each a dict of arrays. A fall or a violated verdict raises ``BipedError`` with
 the line the command line exits with; ``allow_violations=True`` accepts violations.
 ``walk_batch(list_of_option_dicts, threads=None)`` runs walks in parallel like
 ``simulate_batch``, a fall's or violation's ``BipedError`` in its slot.

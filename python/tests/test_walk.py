@@ -1,6 +1,7 @@
 """`biped.walk` against `biped walk` (summary.json and the CSV tables), and its errors."""
 
 import csv
+import gzip
 import json
 
 import numpy as np
@@ -25,10 +26,14 @@ def test_walk_equals_cli(cli_run, tmp_path):
     assert done.returncode == 0, done.stderr
     reference = json.loads((tmp_path / "summary.json").read_text())
     assert _stable(summary) == _stable(reference)
-    assert set(tables) == {"none", "none_trajectory"}
+    assert set(tables) == {"none", "none_trajectory", "none_recording"}
     for stem, table in tables.items():
-        with open(tmp_path / f"{stem}.csv", newline="") as f:
-            rows = list(csv.reader(f))
+        if stem.endswith("_recording"):
+            with gzip.open(tmp_path / f"{stem}.csv.gz", "rt", newline="") as f:
+                rows = list(csv.reader(f))
+        else:
+            with open(tmp_path / f"{stem}.csv", newline="") as f:
+                rows = list(csv.reader(f))
         header, data = rows[0], np.array(rows[1:], dtype=float)
         assert len(header) == len(table)
         for k, name in enumerate(header):

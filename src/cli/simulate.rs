@@ -203,7 +203,7 @@ pub fn execute(
     let done = match (prepared.run(hook, stop), out) {
         (Ok(done), out) => (done, out),
         (Err(a), Some(out)) => {
-            return Err(output::abandon(out, &a.rec, &a.info, a.t, &a.error).into())
+            return Err(output::abandon(out, &a.rec, &a.model, &a.info, a.t, &a.error).into())
         }
         (Err(a), None) => return Err(output::abandoned_line(a.t, &a.error).into()),
     };

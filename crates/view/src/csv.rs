@@ -1,7 +1,9 @@
-//! The numeric CSV tables `biped walk` and `biped simulate` write: one header line of column
-//! names, then one row of numbers per sample.
+//! The numeric CSV tables `biped walk` and `biped simulate` write (plain or gzip-compressed):
+//! one header line of column names, then one row of numbers per sample.
 
 use crate::ViewError;
+use flate2::read::GzDecoder;
+use std::io::Read;
 use std::path::Path;
 
 /// A numeric table: column names and rows.
@@ -63,11 +65,32 @@ fn fields(line: &str) -> Vec<String> {
     out
 }
 
-/// Reads a table; errors name the file, line and column.
+/// Largest decompressed text of a `.gz` table read (what a compressed file may expand to).
+pub const MAX_TEXT: u64 = 4 << 30;
+
+/// Reads a table, gzip-compressed if its name ends in `.gz`; errors name the file, line and
+/// column.
 pub fn read(path: &Path) -> Result<Table, ViewError> {
     let file = path.display();
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| ViewError::Recording(format!("{file}: cannot read: {e}")))?;
+    let cannot = |e: std::io::Error| ViewError::Recording(format!("{file}: cannot read: {e}"));
+    let text = match path.extension().is_some_and(|e| e == "gz") {
+        true => {
+            let mut text = String::new();
+            let f = std::fs::File::open(path).map_err(cannot)?;
+            GzDecoder::new(std::io::BufReader::new(f))
+                .take(MAX_TEXT + 1)
+                .read_to_string(&mut text)
+                .map_err(cannot)?;
+            if text.len() as u64 > MAX_TEXT {
+                return Err(ViewError::Recording(format!(
+                    "{file}: more than {} GiB of text once decompressed",
+                    MAX_TEXT >> 30
+                )));
+            }
+            text
+        }
+        false => std::fs::read_to_string(path).map_err(cannot)?,
+    };
     parse(&text, &file.to_string())
 }
 

@@ -26,8 +26,9 @@
 //! * `GET /api/recording?name=NAME&from=I&count=N&signals=A,B` — `{"names", "name", "frames",
 //!   "time", "columns", "from", "count", "next", "poses": [[[x,y,z,qx,qy,qz,qw] per body] per
 //!   frame], "com", "zmp", "forces", "signals": {A: [..]}}` for frames `I..I+N` (at most
-//!   [`api::MAX_PAGE`]); `time` and `columns` are always complete. Frames are the table's
-//!   rows thinned to about [`recording::FRAME_RATE`] per second; the columns of a walk's
+//!   [`api::MAX_PAGE`]); `time` and `columns` (without the `body[...]` poses) are always
+//!   complete. Frames are those of a recording for replay (docs/recording.md), or a table's
+//!   rows thinned to about [`recording::FRAME_RATE`] per second, where the columns of a walk's
 //!   `METHOD.csv` (`L_z`, `tau_z`, `min_distance`, ...) join those of `METHOD_trajectory.csv`.
 //! * `GET /api/mesh/K` — a mesh file of the scene.
 

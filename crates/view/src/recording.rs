@@ -1,16 +1,22 @@
-//! Recordings the viewer plays back: the tables `biped walk` (`METHOD_trajectory.csv`) and
-//! `biped simulate` (`signals.csv`) write, their `q[NAME]` columns turned into body poses by
-//! forward kinematics at about 100 frames per second.
+//! Recordings the viewer plays back: the recordings for replay that `biped walk`
+//! (`METHOD_recording.csv.gz`) and `biped simulate` (`recording.csv.gz`) write, with every
+//! body's pose (docs/recording.md), or their full tables (`METHOD_trajectory.csv`,
+//! `signals.csv`), whose `q[NAME]` columns are turned into body poses by forward kinematics;
+//! at about 100 frames per second.
 
 use crate::csv::{self, Table};
 use crate::robot::Robot;
 use crate::ViewError;
 use biped_dynamics::{update_placements, Data, Model};
-use nalgebra::{DVector, Isometry3};
+use biped_sim::record::replay::{frame_rows, normalize_quaternions, pose_column, POSE_FIELDS};
+use nalgebra::{DVector, Isometry3, Quaternion, Translation3, UnitQuaternion};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-/// Frames per second kept of a recording sampled faster (every k-th row, plus the last).
-pub const FRAME_RATE: f64 = 100.0;
+pub use biped_sim::record::replay::FRAME_RATE;
+
+/// The recording `biped simulate` writes (docs/recording.md).
+pub const RECORDING_FILE: &str = "recording.csv.gz";
 
 /// One recording: per kept frame its time, the world pose of every robot body and the values
 /// of every column of the table.
@@ -38,8 +44,25 @@ impl Recording {
     }
 }
 
-/// The recordings at `path`: a folder's `signals.csv` or `*_trajectory.csv` files (sorted by
-/// name), or one such table.
+/// What a file of a recording folder holds, by its name: the label it is shown under and
+/// whether it is a recording for replay (preferred over a table of the same label).
+fn classify(name: &str) -> Option<(String, bool)> {
+    if name == RECORDING_FILE {
+        return Some(("signals".into(), true));
+    }
+    if let Some(stem) = name.strip_suffix("_recording.csv.gz") {
+        return Some((stem.into(), true));
+    }
+    if name == "signals.csv" {
+        return Some(("signals".into(), false));
+    }
+    let stem = name.strip_suffix("_trajectory.csv")?;
+    Some((stem.into(), false))
+}
+
+/// The recordings at `path`: a folder's recordings for replay (`recording.csv.gz`,
+/// `STEM_recording.csv.gz`), or where a label has none its table (`signals.csv`,
+/// `METHOD_trajectory.csv`), sorted by label; or one such file.
 pub fn open(path: &Path, robot: &Robot) -> Result<Vec<Recording>, ViewError> {
     let shown = path.display();
     let meta = std::fs::metadata(path)
@@ -49,29 +72,32 @@ pub fn open(path: &Path, robot: &Robot) -> Result<Vec<Recording>, ViewError> {
     }
     let entries = std::fs::read_dir(path)
         .map_err(|e| ViewError::Recording(format!("--recording {shown}: {e}")))?;
-    let mut files: Vec<(String, PathBuf)> = entries
-        .filter_map(|e| e.ok())
-        .filter_map(|e| {
-            let name = e.file_name().to_string_lossy().to_string();
-            let method = name.strip_suffix("_trajectory.csv").map(str::to_string);
-            let label = method.or_else(|| (name == "signals.csv").then(|| "signals".into()));
-            label.map(|l| (l, e.path()))
-        })
-        .collect();
-    files.sort();
+    let mut files: BTreeMap<String, (bool, PathBuf)> = BTreeMap::new();
+    for e in entries.filter_map(|e| e.ok()) {
+        let name = e.file_name().to_string_lossy().to_string();
+        let Some((label, replay)) = classify(&name) else {
+            continue;
+        };
+        if files.get(&label).is_none_or(|(r, _)| replay && !r) {
+            files.insert(label, (replay, e.path()));
+        }
+    }
     if files.is_empty() {
         return Err(ViewError::Recording(format!(
-            "--recording {shown}: no signals.csv (biped simulate) or METHOD_trajectory.csv \
-             (biped walk) in this folder"
+            "--recording {shown}: no recording ({RECORDING_FILE} of biped simulate, \
+             METHOD_recording.csv.gz of biped walk) or table (signals.csv, \
+             METHOD_trajectory.csv) in this folder"
         )));
     }
     let read = files
         .iter()
-        .map(|(name, file)| from_table(file, name, robot));
+        .map(|(name, (_, file))| from_table(file, name, robot));
     read.collect()
 }
 
-/// Reads one table and computes the body poses of its kept frames.
+/// Reads one recording or table (`.csv` or `.csv.gz`): the body poses of its kept frames
+/// from its `body[NAME]` columns when it has them for every body of the robot, or else by
+/// forward kinematics of its `q[NAME]` columns.
 pub fn from_table(file: &Path, name: &str, robot: &Robot) -> Result<Recording, ViewError> {
     let mut table = csv::read(file)?;
     let shown = file.display();
@@ -79,55 +105,67 @@ pub fn from_table(file: &Path, name: &str, robot: &Robot) -> Result<Recording, V
     let Some(t) = time(&table) else {
         return Err(ViewError::Recording(format!("{shown}: no `time` column")));
     };
-    // A walk's METHOD.csv beside METHOD_trajectory.csv adds L_z, tau_z, distances, margins.
-    let series = file
-        .to_str()
-        .and_then(|f| f.strip_suffix("_trajectory.csv"))
-        .map(|stem| PathBuf::from(format!("{stem}.csv")))
-        .filter(|p| p.is_file());
-    if let Some(series) = series {
-        let other = csv::read(&series)?;
-        let other_t = time(&other).ok_or_else(|| {
-            ViewError::Recording(format!("{}: no `time` column", series.display()))
-        })?;
-        table.join(&other, t, other_t);
-    }
+    join_series(file, &mut table, t)?;
     let model = &robot.model;
+    let bodies = body_columns(model, &table);
     let map = coordinate_columns(model, &table);
-    if map.iter().all(Option::is_none) {
+    if bodies.is_none() && map.iter().all(Option::is_none) {
         return Err(ViewError::Recording(format!(
             "{shown}: no q[NAME] column names a coordinate of {}",
             robot.label
         )));
     }
-    let rows = kept_rows(&table, t);
+    let times: Vec<f64> = table.rows.iter().map(|r| r[t]).collect();
+    let rows = frame_rows(&times, FRAME_RATE);
     let mut data = Data::new(model);
+    let kept: Vec<usize> = (0..table.columns.len())
+        .filter(|&c| !table.columns[c].starts_with("body["))
+        .collect();
     let mut rec = Recording {
         name: name.to_string(),
         file: file.to_path_buf(),
         time: Vec::with_capacity(rows.len()),
         poses: Vec::with_capacity(rows.len()),
-        columns: table.columns.clone(),
+        columns: kept.iter().map(|&c| table.columns[c].clone()).collect(),
         values: Vec::with_capacity(rows.len()),
     };
     let neutral = model.neutral();
     for r in rows {
         let row = &table.rows[r];
-        let mut q = neutral.clone();
-        for (k, col) in map.iter().enumerate() {
-            if let Some(c) = col {
-                q[k] = row[*c];
+        let poses = match &bodies {
+            Some(cols) => cols.iter().map(|c| pose_of(row, c)).collect(),
+            None => {
+                let q = coordinates(model, &map, row, &neutral);
+                update_placements(model, &mut data, &q).map_err(|e| {
+                    ViewError::Recording(format!("{shown}: row at time {}: {e}", row[t]))
+                })?;
+                (0..model.nbodies()).map(|b| data.body_pose(b)).collect()
             }
-        }
-        normalize_quaternions(model, &mut q);
-        update_placements(model, &mut data, &q)
-            .map_err(|e| ViewError::Recording(format!("{shown}: row at time {}: {e}", row[t])))?;
+        };
         rec.time.push(row[t]);
-        rec.poses
-            .push((0..model.nbodies()).map(|b| data.body_pose(b)).collect());
-        rec.values.push(row.clone());
+        rec.poses.push(poses);
+        rec.values.push(kept.iter().map(|&c| row[c]).collect());
     }
     Ok(rec)
+}
+
+/// Joins a walk's `METHOD.csv` (`L_z`, `tau_z`, distances, margins) to the table of
+/// `METHOD_trajectory.csv` beside it.
+fn join_series(file: &Path, table: &mut Table, t: usize) -> Result<(), ViewError> {
+    let series = file
+        .to_str()
+        .and_then(|f| f.strip_suffix("_trajectory.csv"))
+        .map(|stem| PathBuf::from(format!("{stem}.csv")))
+        .filter(|p| p.is_file());
+    let Some(series) = series else {
+        return Ok(());
+    };
+    let other = csv::read(&series)?;
+    let other_t = other.column("time").or_else(|| other.column("t"));
+    let other_t = other_t
+        .ok_or_else(|| ViewError::Recording(format!("{}: no `time` column", series.display())))?;
+    table.join(&other, t, other_t);
+    Ok(())
 }
 
 /// For every coordinate of `q`, the table column `q[NAME]` holding it.
@@ -139,37 +177,49 @@ fn coordinate_columns(model: &Model, table: &Table) -> Vec<Option<usize>> {
         .collect()
 }
 
-/// Every k-th row so that about [`FRAME_RATE`] frames per second remain, and the last row.
-fn kept_rows(table: &Table, t: usize) -> Vec<usize> {
-    let n = table.rows.len();
-    if n < 2 {
-        return (0..n).collect();
+/// The positions of `row` (`neutral` where no column holds a coordinate), quaternions unit.
+fn coordinates(
+    model: &Model,
+    map: &[Option<usize>],
+    row: &[f64],
+    neutral: &DVector<f64>,
+) -> DVector<f64> {
+    let mut q = neutral.clone();
+    for (k, col) in map.iter().enumerate() {
+        if let Some(c) = col {
+            q[k] = row[*c];
+        }
     }
-    let span = table.rows[n - 1][t] - table.rows[0][t];
-    let dt = span / (n - 1) as f64;
-    let stride = if dt > 0.0 && dt.is_finite() {
-        ((1.0 / FRAME_RATE) / dt + 1e-6).floor().max(1.0) as usize
-    } else {
-        1
-    };
-    let mut rows: Vec<usize> = (0..n).step_by(stride).collect();
-    if rows.last() != Some(&(n - 1)) {
-        rows.push(n - 1);
-    }
-    rows
+    normalize_quaternions(model, &mut q);
+    q
 }
 
-/// Scales the quaternion of every free joint to unit length (identity if it is zero or not
-/// finite): recorded values are rounded, and forward kinematics needs unit quaternions.
-fn normalize_quaternions(model: &Model, q: &mut DVector<f64>) {
-    for j in model.joints().iter().filter(|j| j.nq == 7) {
-        let mut quat = q.rows_mut(j.q_index + 3, 4);
-        let norm = quat.norm();
-        if norm > 0.0 && norm.is_finite() {
-            quat /= norm;
-        } else {
-            quat.copy_from_slice(&[0.0, 0.0, 0.0, 1.0]);
+/// The `body[NAME].x` .. `.qw` columns of every body of `model`, if the table has them all.
+fn body_columns(model: &Model, table: &Table) -> Option<Vec<[usize; 7]>> {
+    let find = |b: &str| -> Option<[usize; 7]> {
+        let mut cols = [0; 7];
+        for (c, f) in cols.iter_mut().zip(POSE_FIELDS) {
+            *c = table.column(&pose_column(b, f))?;
         }
+        Some(cols)
+    };
+    model.body_names().into_iter().map(find).collect()
+}
+
+/// The pose in columns `c` (`x, y, z, qx, qy, qz, qw`) of `row`, its quaternion scaled to
+/// unit length (the identity if it is zero or not finite).
+fn pose_of(row: &[f64], c: &[usize; 7]) -> Isometry3<f64> {
+    let v = c.map(|k| row[k]);
+    let quat = Quaternion::new(v[6], v[3], v[4], v[5]);
+    let n = quat.norm();
+    let rot = match n > 0.0 && n.is_finite() {
+        true => UnitQuaternion::new_unchecked(quat / n),
+        false => UnitQuaternion::identity(),
+    };
+    let pos = Translation3::new(v[0], v[1], v[2]);
+    match v.iter().all(|x| x.is_finite()) {
+        true => Isometry3::from_parts(pos, rot),
+        false => Isometry3::identity(),
     }
 }
 

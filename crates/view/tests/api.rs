@@ -161,6 +161,69 @@ fn recording_is_paged_at_100_hz_with_poses_from_q() {
         .starts_with("signals: no column `nope`"));
 }
 
+/// `NAME_recording.csv.gz` at 100 Hz for 0.5 s: `q[root.x] = t`, and body `k` at
+/// `x = k + t` (unrelated to `q`, so that the test sees which the viewer uses), unless
+/// `skip` names a body left out.
+fn write_replay(dir: &Path, name: &str, skip: Option<&str>) {
+    use std::io::Write;
+    let lola = lola::build(LolaType::Type2).unwrap();
+    let bodies: Vec<&str> = lola.model.body_names();
+    let mut header = String::from("time,q[root.x],q[root.z],q[root.qw],L_z");
+    for b in bodies.iter().filter(|b| Some(**b) != skip) {
+        for f in ["x", "y", "z", "qx", "qy", "qz", "qw"] {
+            header += &format!(",body[{b}].{f}");
+        }
+    }
+    let mut text = header + "\n";
+    for k in 0..=50 {
+        let t = k as f64 / 100.0;
+        text += &format!("{t},{t},1,1,{}", 2.0 * t);
+        for (i, b) in bodies.iter().enumerate() {
+            if Some(*b) != skip {
+                text += &format!(",{},0,0.5,0,0,0,2", i as f64 + t);
+            }
+        }
+        text += "\n";
+    }
+    let file = std::fs::File::create(dir.join(format!("{name}_recording.csv.gz"))).unwrap();
+    let mut gz = flate2::write::GzEncoder::new(file, flate2::Compression::fast());
+    gz.write_all(text.as_bytes()).unwrap();
+    gz.finish().unwrap();
+}
+
+#[test]
+fn recordings_for_replay_are_preferred_and_their_body_poses_used() {
+    let dir = temp_dir("replay");
+    write_recording(&dir);
+    write_replay(&dir, "minimization", None);
+    write_replay(&dir, "dynamic", Some("l_toe"));
+    let server = Running::start(&lola_config(None, Some(dir)));
+    let (status, page) = server.json("GET", "/api/recording?name=minimization&signals=L_z", b"");
+    assert_eq!(status, 200, "{page}");
+    assert_eq!(
+        page["names"],
+        serde_json::json!(["dynamic", "minimization"])
+    );
+    assert_eq!(page["frames"], 51);
+    assert_eq!(page["signals"]["L_z"][10], 0.2);
+    // Body k at x = k + t, the quaternion (0, 0, 0, 2) scaled to unit length.
+    let frame = &page["poses"][10];
+    for k in [0, 5, 20] {
+        let x = frame[k][0].as_f64().unwrap();
+        assert!((x - (k as f64 + 0.1)).abs() < 1e-5, "body {k}: {x}");
+        assert_eq!(frame[k][6].as_f64(), Some(1.0));
+    }
+    let columns = page["columns"].as_array().unwrap();
+    assert!(!columns
+        .iter()
+        .any(|c| c.as_str().unwrap().starts_with("body[")));
+    // A recording without every body's pose is placed by forward kinematics of its q.
+    let (_, dynamic) = server.json("GET", "/api/recording?name=dynamic&from=10&count=1", b"");
+    let pelvis = &dynamic["poses"][0][0];
+    assert!((pelvis[0].as_f64().unwrap() - 0.1).abs() < 1e-6);
+    assert!((pelvis[2].as_f64().unwrap() - 1.0).abs() < 1e-6);
+}
+
 /// The pair distances at a frame, computed here through the Lola binding of biped_robots.
 fn expected_distances(q_row: &[(String, f64)]) -> Vec<Option<f64>> {
     let lola = lola::build(LolaType::Type2).unwrap();

@@ -41,8 +41,8 @@ fn into_py(py: Python<'_>, (summary, tables): WalkOutput) -> PyResult<Py<PyAny>>
 }
 
 /// Runs `biped walk` with the options `words` (command-line words, see `biped.walk`);
-/// returns `(summary, tables)`, the tables by file stem (`"none"`, `"none_trajectory"`, ...,
-/// `"dynamic"`), each a dict of column name to array. A fall or a violated verdict raises
+/// returns `(summary, tables)`, the tables by file stem (`"none"`, `"none_trajectory"`,
+/// `"none_recording"`, ..., `"dynamic"`, `"dynamic_recording"`), each a dict of column name to array. A fall or a violated verdict raises
 /// `BipedError` with the line the command line exits with (unless `allow_violations`).
 #[pyfunction]
 pub fn walk(py: Python<'_>, words: Vec<String>) -> PyResult<Py<PyAny>> {

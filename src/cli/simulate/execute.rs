@@ -6,6 +6,7 @@ use super::output;
 use super::report::{final_base_height, summary_json};
 use super::setup::{Info, Job};
 use super::SimulateArgs;
+use biped_dynamics::Model;
 use biped_sim::controller::{Hook, Hooked, JointPd};
 use biped_sim::record::Recorder;
 use biped_sim::simulation::{Frame, Signals, Simulation, Summary};
@@ -56,6 +57,8 @@ pub struct Abandoned {
     pub t: f64,
     /// Why it stopped.
     pub error: SimError,
+    /// The simulated plant's model (of the recorded `q[NAME]` columns).
+    pub model: Model,
 }
 
 impl Prepared {
@@ -85,6 +88,7 @@ impl Prepared {
         let due = job.recording();
         let info = job.info();
         let duration = job.scenario.duration;
+        let model = job.plant.model().clone();
         let mut last_t = 0.0;
         let mut observe = |f: &Frame| -> Result<(), SimError> {
             stop(f.t, duration)?;
@@ -107,6 +111,7 @@ impl Prepared {
                 info,
                 t: last_t,
                 error,
+                model,
             })),
         }
     }

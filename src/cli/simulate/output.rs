@@ -1,12 +1,14 @@
-//! Files written by `biped simulate`: `signals.csv` (every recorded signal), SVG plots of the
-//! quantities one checks first and `summary.json`.
+//! Files written by `biped simulate`: `signals.csv` (every recorded signal), its recording for
+//! replay, SVG plots of the quantities one checks first and `summary.json`.
 
 use super::setup::Info;
 use super::Outcome;
 use crate::cli::outdir::{self, OutputDir, Status};
+use biped_dynamics::Model;
 use biped_sim::glob::glob_match;
 use biped_sim::plant::Plant;
-use biped_sim::record::Recorder;
+use biped_sim::record::replay::{replay, write_csv_gz, FRAME_RATE};
+use biped_sim::record::{RecordError, Recorder};
 use biped_sim::simulation::Frame;
 use biped_sim::SimError;
 use serde_json::json;
@@ -17,6 +19,15 @@ type OutResult<T> = Result<T, Box<dyn std::error::Error>>;
 
 /// At most this many signals per plot (the largest by excursion).
 const MAX_LINES: usize = 8;
+
+/// The recording for replay (docs/recording.md) of `signals.csv`.
+pub const RECORDING: &str = "recording.csv.gz";
+
+/// Writes [`RECORDING`] of the signals `rec` of a plant of `model` into `dir`.
+fn write_recording(rec: &Recorder, model: &Model, dir: &Path) -> Result<(), RecordError> {
+    let recording = replay(model, rec, FRAME_RATE)?;
+    write_csv_gz(&recording, &dir.join(RECORDING))
+}
 
 /// Column of the total vertical contact force, recorded besides the library's signals.
 pub const TOTAL_FZ: &str = "contact.fz";
@@ -45,7 +56,14 @@ pub fn record_total(f: &Frame, rec: &mut Recorder) -> Result<(), SimError> {
 /// Ends a run that stopped at `t` with `err`: the signals recorded until then and a
 /// `summary.json` marked failed or interrupted replace the output directory; returns the
 /// error line.
-pub fn abandon(out: OutputDir, rec: &Recorder, info: &Info, t: f64, err: &SimError) -> String {
+pub fn abandon(
+    out: OutputDir,
+    rec: &Recorder,
+    model: &Model,
+    info: &Info,
+    t: f64,
+    err: &SimError,
+) -> String {
     let status = match err {
         SimError::Stopped(_) => Status::Interrupted,
         _ => Status::Failed,
@@ -58,6 +76,9 @@ pub fn abandon(out: OutputDir, rec: &Recorder, info: &Info, t: f64, err: &SimErr
             "; signals until then in {}",
             out.target().join("signals.csv").display()
         );
+        if write_recording(rec, model, out.path()).is_ok() {
+            files.push(RECORDING);
+        }
     }
     let base = json!({
         "model": info.model,
@@ -227,8 +248,9 @@ pub fn chosen_plots(rec: &Recorder, options: &[String]) -> OutResult<Vec<Plot>> 
 /// into `dir`; returns the file names.
 pub fn write_all(done: &Outcome, chosen: &[Plot], dir: &Path) -> OutResult<Vec<String>> {
     let (rec, plant, info) = (&done.rec, done.sim.plant(), &done.info);
-    let mut files = vec!["signals.csv".to_string()];
+    let mut files = vec!["signals.csv".to_string(), RECORDING.to_string()];
     rec.write_csv(&dir.join(&files[0]))?;
+    write_recording(rec, plant.model(), dir)?;
     for p in plots(rec, plant).iter().chain(chosen) {
         let title = format!(
             "{} ({} {}, {})",

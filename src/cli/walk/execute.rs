@@ -10,6 +10,7 @@ use biped_control::walk::{
     DynamicWalkSummary, Method, WalkParams, WalkRun,
 };
 use biped_robots::lola::{self, LolaModel, LolaType};
+use biped_sim::record::replay::write_csv_gz;
 use biped_sim::Recorder;
 use serde_json::{Map, Value};
 use std::path::Path;
@@ -27,7 +28,8 @@ pub struct Walk {
     pub summary: Value,
     /// One line per violated verdict.
     pub lines: Vec<String>,
-    /// The tables by file stem (`none`, `none_trajectory`, ..., `dynamic`).
+    /// The tables by file stem (`none`, `none_trajectory`, `none_recording`, ..., `dynamic`,
+    /// `dynamic_recording`).
     pub tables: Vec<(String, Recorder)>,
 }
 
@@ -162,6 +164,8 @@ fn walk_all(
             format!("{m}_trajectory"),
             tables::trajectory_table(&run)?,
         )?;
+        let recording = tables::recording_table(&run, &lola.model)?;
+        keep_recording(tables, dir, format!("{m}_recording"), recording)?;
         summary.insert(m.name().to_string(), serde_json::to_value(&run.summary)?);
         runs.push(run);
     }
@@ -183,6 +187,8 @@ fn walk_all(
         tables::dynamic_plots(&table, dir)?;
     }
     keep(tables, dir, "dynamic".into(), table)?;
+    let recording = tables::dynamic_recording(&run)?;
+    keep_recording(tables, dir, "dynamic_recording".into(), recording)?;
     summary.insert("dynamic".into(), serde_json::to_value(run.summary)?);
     Ok((runs, Some((method, run))))
 }
@@ -219,6 +225,20 @@ fn keep(
 ) -> Result<(), Box<dyn std::error::Error>> {
     if let Some(dir) = dir {
         table.write_csv(&dir.join(format!("{stem}.csv")))?;
+    }
+    tables.push((stem, table));
+    Ok(())
+}
+
+/// Writes the recording `table` as `dir/STEM.csv.gz` (if writing) and keeps it under `stem`.
+fn keep_recording(
+    tables: &mut Vec<(String, Recorder)>,
+    dir: Option<&Path>,
+    stem: String,
+    table: Recorder,
+) -> Result<(), Box<dyn std::error::Error>> {
+    if let Some(dir) = dir {
+        write_csv_gz(&table, &dir.join(format!("{stem}.csv.gz")))?;
     }
     tables.push((stem, table));
     Ok(())

@@ -1,11 +1,42 @@
 //! The tables `biped walk` writes as CSV (and returns to Python): per method its series and
-//! full trajectory, the dynamic walk's signals, and the plots drawn from them.
+//! full trajectory, the dynamic walk's signals, the recordings for replay (docs/recording.md)
+//! and the plots drawn from them.
 
 use biped_control::walk::run::RECORDED_JOINTS;
-use biped_control::walk::{DynamicWalkRun, WalkRun};
+use biped_control::walk::{DynamicWalkRun, DynamicWalkSeries, WalkRun, WalkSeries};
+use biped_dynamics::Model;
+use biped_sim::record::replay::{frame_rows, replay, FRAME_RATE};
 use biped_sim::record::RecordError;
 use biped_sim::Recorder;
 use std::path::Path;
+
+/// The dynamic walk's base, tilt and per-foot signals of cycle `k` (the columns of
+/// `dynamic.csv`).
+fn dynamic_row(s: &DynamicWalkSeries, k: usize) -> [(&'static str, f64); 20] {
+    let [x, y, z] = s.base[k];
+    [
+        ("base_x", x),
+        ("base_y", y),
+        ("base_z", z),
+        ("planned_base_x", s.planned_base_x[k]),
+        ("trunk_tilt", s.tilt[k]),
+        ("fz_left", s.foot_fz[k][0]),
+        ("fz_right", s.foot_fz[k][1]),
+        ("tau_z_left", s.tau_z[k][0]),
+        ("tau_z_right", s.tau_z[k][1]),
+        ("toe_fz_left", s.toe_fz[k][0]),
+        ("toe_fz_right", s.toe_fz[k][1]),
+        ("heel_lift_left", s.heel_lift[k][0]),
+        ("heel_lift_right", s.heel_lift[k][1]),
+        ("friction_usage_left", s.friction_usage[k][0]),
+        ("friction_usage_right", s.friction_usage[k][1]),
+        ("slip_speed_left", s.slip_speed[k][0]),
+        ("slip_speed_right", s.slip_speed[k][1]),
+        ("points_in_contact_left", s.points_in_contact[k][0] as f64),
+        ("points_in_contact_right", s.points_in_contact[k][1] as f64),
+        ("tracking_error", s.tracking_error[k]),
+    ]
+}
 
 /// The table of `dynamic.csv`: the dynamic walk's base, tilt and per-foot signals.
 pub fn dynamic_table(run: &DynamicWalkRun) -> Result<Recorder, RecordError> {
@@ -13,33 +44,35 @@ pub fn dynamic_table(run: &DynamicWalkRun) -> Result<Recorder, RecordError> {
     let mut rec = Recorder::with_capacity(s.t.len());
     for k in 0..s.t.len() {
         rec.sample(s.t[k])?;
-        let [x, y, z] = s.base[k];
-        for (name, v) in [
-            ("base_x", x),
-            ("base_y", y),
-            ("base_z", z),
-            ("planned_base_x", s.planned_base_x[k]),
-            ("trunk_tilt", s.tilt[k]),
-            ("fz_left", s.foot_fz[k][0]),
-            ("fz_right", s.foot_fz[k][1]),
-            ("tau_z_left", s.tau_z[k][0]),
-            ("tau_z_right", s.tau_z[k][1]),
-            ("toe_fz_left", s.toe_fz[k][0]),
-            ("toe_fz_right", s.toe_fz[k][1]),
-            ("heel_lift_left", s.heel_lift[k][0]),
-            ("heel_lift_right", s.heel_lift[k][1]),
-            ("friction_usage_left", s.friction_usage[k][0]),
-            ("friction_usage_right", s.friction_usage[k][1]),
-            ("slip_speed_left", s.slip_speed[k][0]),
-            ("slip_speed_right", s.slip_speed[k][1]),
-            ("points_in_contact_left", s.points_in_contact[k][0] as f64),
-            ("points_in_contact_right", s.points_in_contact[k][1] as f64),
-            ("tracking_error", s.tracking_error[k]),
-        ] {
+        for (name, v) in dynamic_row(s, k) {
             rec.set(name, v)?;
         }
     }
     Ok(rec)
+}
+
+/// The table of `dynamic_recording.csv` (docs/recording.md): the simulated motion, every body's
+/// pose and the signals of `dynamic.csv` at [`FRAME_RATE`].
+pub fn dynamic_recording(run: &DynamicWalkRun) -> Result<Recorder, RecordError> {
+    let s = &run.series;
+    let nq = s.q_names.len();
+    let mut rec = Recorder::with_capacity(s.t.len());
+    let q_ids = s
+        .q_names
+        .iter()
+        .map(|n| rec.register(&format!("q[{n}]")))
+        .collect::<Result<Vec<_>, _>>()?;
+    for k in 0..s.t.len() {
+        rec.sample(s.t[k])?;
+        let q = s.q.get(k * nq..(k + 1) * nq).unwrap_or(&[]);
+        for (id, v) in q_ids.iter().zip(q) {
+            rec.set_id(*id, &[*v])?;
+        }
+        for (name, v) in dynamic_row(s, k) {
+            rec.set(name, v)?;
+        }
+    }
+    replay(&run.model, &rec, FRAME_RATE)
 }
 
 /// The plots of the dynamic walk's table: base x/z, trunk tilt, vertical foot forces, `tau_z`.
@@ -81,17 +114,26 @@ pub fn dynamic_plots(rec: &Recorder, out: &Path) -> Result<(), RecordError> {
     Ok(())
 }
 
+/// One method's momentum, torque, distance and friction signals of cycle `k`.
+fn series_row(s: &WalkSeries, k: usize) -> [(&'static str, f64); 5] {
+    [
+        ("L_z", s.lz[k]),
+        ("dL_z", s.dlz[k]),
+        ("tau_z", s.tau_z[k]),
+        ("min_distance", s.min_distance[k]),
+        ("friction_usage", s.friction_usage[k]),
+    ]
+}
+
 /// The table of `METHOD.csv`: one method's momentum, torque, distance and joint series.
 pub fn series_table(run: &WalkRun) -> Result<Recorder, RecordError> {
     let s = &run.series;
     let mut rec = Recorder::with_capacity(s.t.len());
     for k in 0..s.t.len() {
         rec.sample(s.t[k])?;
-        rec.set("L_z", s.lz[k])?;
-        rec.set("dL_z", s.dlz[k])?;
-        rec.set("tau_z", s.tau_z[k])?;
-        rec.set("min_distance", s.min_distance[k])?;
-        rec.set("friction_usage", s.friction_usage[k])?;
+        for (name, v) in series_row(s, k) {
+            rec.set(name, v)?;
+        }
         rec.set("zmp_x", s.zmp[k][0])?;
         rec.set("zmp_y", s.zmp[k][1])?;
         for (name, v) in RECORDED_JOINTS.iter().zip(s.joints[k]) {
@@ -99,6 +141,28 @@ pub fn series_table(run: &WalkRun) -> Result<Recorder, RecordError> {
         }
     }
     Ok(rec)
+}
+
+/// The table of `METHOD_recording.csv` (docs/recording.md): one method's motion, every body's
+/// pose of `model`, CoM, ZMP, soles, ground wrench and the signals of `METHOD.csv` (but the
+/// joints, which are the `q[NAME]` columns) at [`FRAME_RATE`].
+pub fn recording_table(run: &WalkRun, model: &Model) -> Result<Recorder, RecordError> {
+    let (tr, s) = (&run.trajectory, &run.series);
+    let rows = frame_rows(&tr.t, FRAME_RATE);
+    let mut rec = Recorder::with_capacity(rows.len());
+    let columns = tr.columns();
+    for k in rows {
+        rec.sample(tr.t[k])?;
+        for (name, v) in columns.iter().zip(tr.row(k)) {
+            rec.set(name, v)?;
+        }
+        if k < s.t.len() {
+            for (name, v) in series_row(s, k) {
+                rec.set(name, v)?;
+            }
+        }
+    }
+    replay(model, &rec, FRAME_RATE)
 }
 
 /// The table of `METHOD_trajectory.csv`: one method's full motion (see docs/walking.md).

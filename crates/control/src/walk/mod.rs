@@ -53,7 +53,9 @@ pub mod trajectory;
 pub mod verdict;
 
 pub use controller::{CycleInfo, WalkController};
-pub use dynamic::{run_dynamic_walk, DynamicWalkParams, DynamicWalkRun, DynamicWalkSummary};
+pub use dynamic::{
+    run_dynamic_walk, DynamicWalkParams, DynamicWalkRun, DynamicWalkSeries, DynamicWalkSummary,
+};
 pub use error::WalkError;
 pub use evaluate::{CycleMetrics, Evaluator};
 pub use method::{Method, WalkParams};

@@ -32,6 +32,9 @@ pub enum RecordError {
     /// A value was set, or output requested, before any sample was started.
     #[error("recorder has no samples")]
     Empty,
+    /// A table that cannot be turned into a recording for replay.
+    #[error("recording: {0}")]
+    Replay(String),
     /// No signal names given to plot.
     #[error("no signals to plot")]
     NoSignals,

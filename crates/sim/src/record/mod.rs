@@ -14,6 +14,7 @@
 
 mod error;
 pub mod plot;
+pub mod replay;
 
 pub use error::RecordError;
 
@@ -237,6 +238,12 @@ impl Recorder {
         self.rows.iter().skip(c).step_by(width).copied().collect()
     }
 
+    /// The values of sample `r` in column order (empty past the last sample).
+    pub fn row(&self, r: usize) -> &[f64] {
+        let width = self.names.len();
+        self.rows.get(r * width..(r + 1) * width).unwrap_or(&[])
+    }
+
     /// Column `name` (a scalar name or `q[i]`), one value per sample.
     pub fn column(&self, name: &str) -> Result<Vec<f64>, RecordError> {
         self.columns_by_name
@@ -272,7 +279,7 @@ impl Recorder {
     }
 
     /// Writes the CSV text to `w`, one row buffer per line.
-    fn csv_to(&self, w: &mut impl Write) -> std::io::Result<()> {
+    pub(crate) fn csv_to(&self, w: &mut impl Write) -> std::io::Result<()> {
         write!(w, "time")?;
         for n in &self.names {
             write!(w, ",{n}")?;

@@ -8,6 +8,7 @@ use super::{DynamicWalkParams, DynamicWalkSeries, DynamicWalkSummary};
 use crate::pattern::WalkingPattern;
 use crate::walk::error::{model_err, WalkError};
 use crate::walk::walk_pattern_params;
+use biped_dynamics::Model;
 use biped_robots::lola::LolaType;
 use biped_sim::plant::{lola_plant, Plant, PlantConfig};
 use biped_sim::simulation::{Frame, Simulation};
@@ -22,6 +23,8 @@ pub struct DynamicWalkRun {
     pub series: DynamicWalkSeries,
     /// Summary and verdict.
     pub summary: DynamicWalkSummary,
+    /// The simulated plant's model (of [`DynamicWalkSeries::q`]).
+    pub model: Model,
 }
 
 /// Runs the kinematic walk of `p`, then tracks it with [`TrackingController`] on the Lola
@@ -88,6 +91,9 @@ fn simulate(
 ) -> Result<DynamicWalkRun, WalkError> {
     let cycles = (duration / r.dt).round() as usize + 1;
     let mut s = DynamicWalkSeries::with_capacity(cycles);
+    let model = sim.plant().model().clone();
+    s.q_names = model.q_names();
+    s.q.reserve(cycles * s.q_names.len());
     let (qi, _) = sim
         .plant()
         .floating_base()
@@ -123,7 +129,11 @@ fn simulate(
     let wall = start.elapsed().as_secs_f64();
     let rhs = sim.plant().rhs_count() - rhs0;
     let summary = DynamicWalkSummary::evaluate(&s, r, p, (wall, rhs), (fell_at, diverged));
-    Ok(DynamicWalkRun { series: s, summary })
+    Ok(DynamicWalkRun {
+        series: s,
+        summary,
+        model,
+    })
 }
 
 /// Appends one cycle of signals.
@@ -150,6 +160,7 @@ fn record(s: &mut DynamicWalkSeries, f: &Frame, r: &JointReference, qi: usize, c
     s.friction_usage.push(both(|w| w.friction_usage));
     s.slip_speed.push(both(|w| w.slip_speed));
     s.points_in_contact.push([left.points, right.points]);
+    s.q.extend_from_slice(&z[..s.q_names.len()]);
     let q = r.row(&r.q, k);
     let err = q
         .iter()

@@ -34,6 +34,10 @@ pub struct DynamicWalkSeries {
     pub points_in_contact: Vec<[usize; 2]>,
     /// Largest joint tracking error `max_j |q_ref - q|` \[rad].
     pub tracking_error: Vec<f64>,
+    /// Names of the plant's position coordinates (`Model::q_names`).
+    pub q_names: Vec<String>,
+    /// The plant's positions, `q_names.len()` per cycle.
+    pub q: Vec<f64>,
 }
 
 impl DynamicWalkSeries {
@@ -52,6 +56,8 @@ impl DynamicWalkSeries {
             slip_speed: Vec::with_capacity(n),
             points_in_contact: Vec::with_capacity(n),
             tracking_error: Vec::with_capacity(n),
+            q_names: Vec::new(),
+            q: Vec::new(),
         }
     }
 }
