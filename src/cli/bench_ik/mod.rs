@@ -39,7 +39,7 @@ pub struct BenchIkArgs {
     )]
     steps: u32,
     /// Pull towards the start pose by a soft posture task (`task`, as the peers) or by the
-    /// comfort term in the null space (`comfort`, no task rows).
+    /// comfort term in the null space (`comfort`, which never competes with the tasks).
     #[arg(long, value_enum, value_name = "METHOD", default_value = "task")]
     posture: Posture,
     /// Print one JSON line `{"peer_tasks": {"median_us", "p99_us"}, "full": {..}}`.

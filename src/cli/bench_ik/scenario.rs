@@ -37,9 +37,9 @@ pub enum TaskSet {
 /// How the joints are pulled towards the start pose.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum Posture {
-    /// A soft posture task (rows in the solve), as the peers' posture task.
+    /// A soft posture task, as the peers' posture task (folded into the joint weight).
     Task,
-    /// The comfort gradient in the null space of the tasks (no rows, a smaller solve).
+    /// The comfort gradient in the null space of the tasks (never competes with the tasks).
     Comfort,
 }
 

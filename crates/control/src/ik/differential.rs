@@ -99,9 +99,13 @@ impl ClosedLoopIk {
         };
         match &mut self.limited {
             Some(s) => {
+                s.set_unit_rows(task.unit_rows())?;
                 s.solve(&p, q, input.dt, &mut self.qdot)?;
             }
-            None => self.rmrc.solve(&p, &mut self.qdot)?,
+            None => {
+                self.rmrc.set_unit_rows(task.unit_rows())?;
+                self.rmrc.solve(&p, &mut self.qdot)?;
+            }
         }
         Ok(&self.qdot)
     }

@@ -3,7 +3,8 @@
 //! - [`position`]: Newton-Raphson (Alg. 4.1) and optimisation with Wolfe line search
 //!   (Alg. 4.2), stopping criteria of Table 4.1.
 //! - [`rmrc`]: RMRC with W-weighted generalized inverse and null-space term, Klein-Huang
-//!   (Alg. 4.3), damped least squares and manipulability (4.22).
+//!   (Alg. 4.3), damped least squares and manipulability (4.22); soft unit rows (posture and
+//!   joint tasks) folded into the joint weight instead of stacked.
 //! - [`differential`]: closed-loop tracking (4.13)-(4.16), Jacobian transpose (4.17),
 //!   resolved acceleration (4.18)-(4.21).
 //! - [`joint_cost`]: joint-limit and comfort cost H_J (Fig. 4.2).
@@ -16,6 +17,8 @@
 pub mod blend;
 pub mod builder;
 pub mod differential;
+#[cfg(test)]
+mod fold_tests;
 pub mod joint_cost;
 pub mod limits;
 pub mod linalg;

@@ -18,7 +18,10 @@
 //! yield in the least-squares sense instead of the remaining joints racing to satisfy a
 //! nearly singular system; the limits never yield. After `max_iterations` the
 //! remaining joints are clamped into the box. Everything is preallocated (no allocation per
-//! call once the weight buffer has the shape of the weight in use).
+//! call once the weight buffer has the shape of the weight in use). Trailing soft unit rows
+//! ([`SaturatedRmrc::set_unit_rows`]) are folded by the inner solve; a held joint's unit row is
+//! a zero row of the restricted problem there and folds nothing, so the damping, the restricted
+//! solves and the release test are those of the stacked problem.
 
 mod multipliers;
 mod restrict;
@@ -144,6 +147,11 @@ impl SaturatedRmrc {
             clamped: 0,
         };
         self.saturate(p, qdot)
+    }
+
+    /// Declares the trailing unit rows of the following problems ([`Rmrc::set_unit_rows`]).
+    pub fn set_unit_rows(&mut self, columns: &[usize]) -> Result<(), IkError> {
+        self.rmrc.set_unit_rows(columns)
     }
 
     /// Forgets the joints held so far (the next [`Self::solve`] starts from the free problem).

@@ -35,6 +35,12 @@ pub trait TaskMap {
     fn softness(&self) -> Option<&[f64]> {
         None
     }
+    /// Columns of the trailing unit rows of the last evaluation: its last `k` rows are zero
+    /// except in these columns, one per row (soft joint-space tasks; the solver folds them into
+    /// the joint weight, [`crate::ik::Rmrc::set_unit_rows`]). The default is none.
+    fn unit_rows(&self) -> &[usize] {
+        &[]
+    }
     /// `out = q (+) v step`; the default is the vector sum (nq = nv).
     fn retract(
         &self,

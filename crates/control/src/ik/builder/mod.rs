@@ -7,7 +7,8 @@
 //! space ([`super::saturation`]): every joint with a URDF range stays `margin` inside it and
 //! below its `<limit velocity>` (or `LimitSettings::max_velocity` where the URDF gives none).
 //! Joints without a range (continuous) are not limited. Added tasks are hard (kept exactly
-//! while the limits allow) unless given a weight; [`Ik::posture`] is soft.
+//! while the limits allow) unless given a weight; [`Ik::posture`] is soft (its rows are folded
+//! into the joint weight of the solve, [`crate::ik::Rmrc::set_unit_rows`]).
 //!
 //! Optional null-space terms (4.12), evaluated at each step's configuration: a comfort pose
 //! ([`Ik::comfort`], the comfort part of H_J), self-collision avoidance on an SSV model

@@ -168,8 +168,7 @@ impl Ik {
 
     /// Moves every joint with a range towards its entry in `q0` in the null space of the tasks
     /// (the comfort part of H_J, Fig. 4.2): the gradient `gain (q - q0)` joins the null-space
-    /// term. Unlike [`Self::posture`] it adds no task rows (a smaller solve) and never competes
-    /// with the tasks.
+    /// term. Unlike [`Self::posture`] it never competes with the tasks.
     pub fn comfort(&mut self, q0: &DVector<f64>, gain: f64) -> Result<(), IkError> {
         crate::ik::linalg::check_dim("comfort pose", self.stack.nq(), q0.len())?;
         if !(gain > 0.0 && gain.is_finite()) {

@@ -1,21 +1,29 @@
-//! [`TaskStack`]: a list of generic [`Task`]s on any model, stacked in order into one
-//! [`TaskMap`] (one kinematics pass, one centroidal pass when a CoM or momentum task needs it,
-//! no allocation per evaluation).
+//! [`TaskStack`]: a list of generic [`Task`]s on any model, stacked into one [`TaskMap`] (one
+//! kinematics pass, one centroidal pass when a CoM or momentum task needs it, no allocation per
+//! evaluation).
+//!
+//! Rows: the tasks in insertion order, except the soft posture and joint tasks, whose unit rows
+//! come last (in insertion order) and are reported by [`TaskMap::unit_rows`], so that the
+//! solver folds them into the joint weight instead of stacking them.
 
+mod check;
 mod frames;
+mod unit;
 
 use super::rows::{com_jacobian_from_ag, put_rows};
-use super::task::{Frame, MomentumAxes, Task, TaskKind};
+use super::task::{MomentumAxes, Task, TaskKind};
 use crate::error::IkError;
 use crate::ik::TaskMap;
 use biped_dynamics::{Centroidal, Data, JacobianError, Jacobians, Model};
 use nalgebra::{DMatrix, DVector, Matrix3};
+use unit::{is_unit, push_columns};
 
 /// Index of a task in its [`TaskStack`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct TaskHandle(pub usize);
 
-/// Generic tasks stacked in insertion order; implements [`TaskMap`].
+/// Generic tasks stacked in insertion order (soft joint-space tasks last); implements
+/// [`TaskMap`].
 #[derive(Debug, Clone)]
 pub struct TaskStack {
     model: Model,
@@ -32,6 +40,8 @@ pub struct TaskStack {
     j6r: DMatrix<f64>,
     soft: Vec<f64>,
     ff: DVector<f64>,
+    /// Columns of the trailing unit rows of the last evaluation.
+    unit: Vec<usize>,
 }
 
 fn kin(e: JacobianError) -> IkError {
@@ -56,6 +66,7 @@ impl TaskStack {
             j6r: DMatrix::zeros(6, nv),
             soft: Vec::new(),
             ff: DVector::zeros(0),
+            unit: Vec::new(),
             model: model.clone(),
         }
     }
@@ -93,44 +104,8 @@ impl TaskStack {
         self.tasks.push(task);
         self.soft.resize(self.rows, 0.0);
         self.ff = DVector::zeros(self.rows);
+        self.unit = Vec::with_capacity(self.rows);
         Ok(TaskHandle(self.tasks.len() - 1))
-    }
-
-    /// Errors on body, q or v indices outside the model, a posture target of the wrong length
-    /// or a weight that is not finite and positive.
-    fn check(&self, task: &Task) -> Result<(), IkError> {
-        let bad = |name, reason| Err(IkError::InvalidParameter { name, reason });
-        if task.weight.is_some_and(|w| !(w > 0.0 && w.is_finite())) {
-            return bad("task weight", "must be finite and > 0");
-        }
-        let (nb, nq, nv) = (self.model.nbodies(), self.model.nq(), self.model.nv());
-        let frame_ok = |f: &Frame| f.body < nb;
-        let ok = match &task.kind {
-            TaskKind::Position { frame, .. }
-            | TaskKind::Orientation { frame, .. }
-            | TaskKind::Pose { frame, .. } => frame_ok(frame),
-            TaskKind::RelativePosition {
-                frame, reference, ..
-            }
-            | TaskKind::RelativeOrientation {
-                frame, reference, ..
-            } => frame_ok(frame) && frame_ok(reference),
-            TaskKind::Posture { joints, target } => {
-                target.len() == nq && joints.iter().all(|&(qi, vi)| qi < nq && vi < nv)
-            }
-            TaskKind::Joint {
-                q_index, v_index, ..
-            } => *q_index < nq && *v_index < nv,
-            TaskKind::Com { .. } | TaskKind::AngularMomentum { .. } => true,
-        };
-        if ok {
-            Ok(())
-        } else {
-            bad(
-                "task",
-                "body, joint index or target length does not fit the model",
-            )
-        }
     }
 
     /// Error and Jacobian rows of task `k` from row `r`.
@@ -181,8 +156,12 @@ impl TaskStack {
                     .copy_from(&(target - self.cen.com()));
             }
             TaskKind::Posture { joints, target } => {
+                // the row block zeroed by contiguous column segments, then the unit entries
+                let (nr, k) = (out.nrows(), joints.len());
+                for col in out.as_mut_slice().chunks_exact_mut(nr) {
+                    col[r..r + k].fill(0.0);
+                }
                 for (i, &(qi, vi)) in joints.iter().enumerate() {
-                    out.row_mut(r + i).fill(0.0);
                     out[(r + i, vi)] = 1.0;
                     err[r + i] = target[qi] - q[qi];
                 }
@@ -273,10 +252,19 @@ impl TaskMap for TaskStack {
                 .map_err(kin)?;
         }
         let mut r = 0;
-        for k in 0..self.tasks.len() {
-            self.write_task(k, q, r, err, jac)?;
-            self.write_velocity(k, r);
-            r += self.tasks[k].kind.dim();
+        self.unit.clear();
+        for unit in [false, true] {
+            for k in 0..self.tasks.len() {
+                if is_unit(&self.tasks[k]) != unit {
+                    continue;
+                }
+                self.write_task(k, q, r, err, jac)?;
+                self.write_velocity(k, r);
+                r += self.tasks[k].kind.dim();
+                if unit {
+                    push_columns(&self.tasks[k].kind, &mut self.unit);
+                }
+            }
         }
         Ok(r)
     }
@@ -287,6 +275,10 @@ impl TaskMap for TaskStack {
 
     fn softness(&self) -> Option<&[f64]> {
         Some(&self.soft)
+    }
+
+    fn unit_rows(&self) -> &[usize] {
+        &self.unit
     }
 
     fn retract(
