@@ -27,6 +27,7 @@ pub struct Feedforward {
     toes: [BodyId; 2],
     fext: Vec<Wrench>,
     ground: (Vector3<f64>, Vector3<f64>),
+    shares: [f64; 2],
 }
 
 impl Feedforward {
@@ -43,6 +44,7 @@ impl Feedforward {
             data: Data::new(&model),
             fext: vec![Wrench::zero(); model.nbodies()],
             ground: (Vector3::zeros(), Vector3::zeros()),
+            shares: [0.5, 0.5],
             model,
             root,
             feet,
@@ -102,12 +104,18 @@ impl Feedforward {
         let p = carrier.map(|b| self.data.world_pos[b]);
         let zmp = self.zmp().unwrap_or_else(|| 0.5 * (p[0] + p[1]).xy());
         let w = Self::shares(s.phase, zmp, p[0].xy(), p[1].xy());
+        self.shares = w;
         let fi = w.map(|wi| f * wi);
         let residual = m0 - p[0].cross(&fi[0]) - p[1].cross(&fi[1]);
         Ok([0, 1].map(|i| {
             let rt = self.data.world_rot[carrier[i]].transpose();
             (carrier[i], Wrench::new(rt * (residual * w[i]), rt * fi[i]))
         }))
+    }
+
+    /// Vertical loads `[left, right]` of the last [`Self::foot_wrenches`] \[N].
+    pub fn planned_loads(&self) -> [f64; 2] {
+        self.shares.map(|w| w * self.ground.0.z)
     }
 
     /// ZMP of the last ground wrench (force `F`, moment `M_0` about the world origin) on

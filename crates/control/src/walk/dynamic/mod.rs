@@ -20,7 +20,9 @@
 //!   the pattern's CoM is corrected for the multibody ZMP ([`mod@reference`], 2 iterations by
 //!   default), and the trunk inclination is fed back through the support ankles
 //!   ([`stabiliser`]); each of the two alone is not enough for the default walk, and without
-//!   the RNEA feedforward the PD alone falls too.
+//!   the RNEA feedforward the PD alone falls too. The feet's heights follow the error of their
+//!   vertical loads ([`force`]): without that, the stiff legs share a double support by
+//!   sub-millimetre length differences, and the walk hops at every step change.
 //! - The reference keeps every joint inside its range (toe-off and heel strike in the
 //!   pattern, hard limits in the IK, see [`crate::walk`]): the summary's `limit_excess` is 0
 //!   for the default walk, so `end_stops = true` (the plant's stops at the joint ranges,
@@ -40,6 +42,7 @@
 
 pub mod feedforward;
 pub mod flight;
+pub mod force;
 pub mod reference;
 pub mod run;
 pub mod slip;
@@ -48,6 +51,7 @@ mod summary;
 pub mod tracking;
 
 pub use feedforward::Feedforward;
+pub use force::{ForceControl, ForceGains};
 pub use reference::{build_reference, JointReference, ReferenceOptions};
 pub use run::{run_dynamic_walk, start_on_ground, DynamicWalkRun};
 pub use slip::{SideContact, SideSample, SlipTracker, SLIP_DISTANCE, SLIP_POINTS};
@@ -81,6 +85,8 @@ pub struct DynamicWalkParams {
     pub feedforward: bool,
     /// Ankle stabiliser gains (`None`: off).
     pub stabiliser: Option<StabiliserGains>,
+    /// Foot force control gains (`None`: off).
+    pub force: Option<ForceGains>,
     /// Clamp the reference into the joint limits shrunk by this margin \[rad] (`None`: no).
     pub clamp_margin: Option<f64>,
     /// Give the plant its end stops at the joint ranges (on by default; the reference stays
@@ -113,6 +119,7 @@ impl Default for DynamicWalkParams {
             gain_scale: 1.0,
             feedforward: true,
             stabiliser: Some(StabiliserGains::default()),
+            force: Some(ForceGains::default()),
             clamp_margin: None,
             end_stops: true,
             zmp_iterations: 2,

@@ -44,6 +44,9 @@ pub struct JointReference {
     pub tilt: Vec<[f64; 2]>,
     /// Support phase per sample.
     pub phase: Vec<Phase>,
+    /// Planned vertical load of the `[left, right]` side per sample (the feedforward's share
+    /// of the ground force) \[N].
+    pub fz: Vec<[f64; 2]>,
     /// Full configuration of the first sample (the start pose).
     pub q0: DVector<f64>,
     /// Largest `|p_mb - p_lipm|` before each correction and after the last \[m].
@@ -155,6 +158,7 @@ pub fn build_reference(
             r.zmp.push(p);
             r.pattern_zmp.push(p0);
             r.phase.push(sample.phase);
+            r.fz.push(ff.planned_loads());
         }
         let worst = err[0]
             .iter()
@@ -200,6 +204,7 @@ fn empty_reference(
         pattern_zmp: Vec::with_capacity(n),
         tilt: Vec::with_capacity(n),
         phase: Vec::with_capacity(n),
+        fz: Vec::with_capacity(n),
         q0,
         zmp_error: Vec::new(),
         clamped_samples: 0,

@@ -1,6 +1,7 @@
 //! [`run_dynamic_walk`]: the kinematic walk tracked in the contact simulation, with its time
 //! series and pass criteria.
 
+use super::force::ForceControl;
 use super::reference::{build_reference, JointReference};
 use super::slip::{SideContact, SideSample};
 use super::tracking::TrackingController;
@@ -57,6 +58,9 @@ pub fn run_dynamic_walk(p: &DynamicWalkParams) -> Result<DynamicWalkRun, WalkErr
         p.stabiliser,
     )
     .map_err(model_err)?;
+    if let Some(g) = p.force {
+        ctrl = ctrl.with_force_control(ForceControl::new(&lola, &plant, g)?);
+    }
     ctrl.scale_gains(p.gain_scale);
     let mut sim = Simulation::new(plant, ctrl, Integrator::Rk4, z0).map_err(model_err)?;
     let duration = (reference.len() - 1) as f64 * reference.dt + p.hold_time;

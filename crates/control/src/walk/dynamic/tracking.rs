@@ -6,6 +6,7 @@
 //! zero-order hold at 1 kHz). The reference is held at its last sample after the walk. An
 //! optional [`Stabiliser`] shifts the support ankles' targets from the IMU.
 
+use super::force::ForceControl;
 use super::reference::JointReference;
 use super::stabiliser::{Stabiliser, StabiliserGains};
 use biped_sim::controller::{Commands, Controller, JointPd};
@@ -24,6 +25,7 @@ pub struct TrackingController {
     kd: Vec<f64>,
     feedforward: bool,
     stabiliser: Option<Stabiliser>,
+    force: Option<ForceControl>,
     target: Vec<f64>,
     last_error: f64,
 }
@@ -58,8 +60,20 @@ impl TrackingController {
             reference,
             period,
             feedforward,
+            force: None,
             last_error: 0.0,
         })
+    }
+
+    /// Adds the foot force control ([`ForceControl`]) to the tracking.
+    pub fn with_force_control(mut self, force: ForceControl) -> Self {
+        self.force = Some(force);
+        self
+    }
+
+    /// The foot force control's height difference `z_left - z_right` \[m] (0 without it).
+    pub fn foot_offset(&self) -> f64 {
+        self.force.as_ref().map_or(0.0, ForceControl::offset)
     }
 
     /// Scales all PD gains by `factor` (0 = feedforward only).
@@ -103,6 +117,10 @@ impl Controller for TrackingController {
         self.target.copy_from_slice(r.row(&r.q, k));
         if let (Some(st), Some(imu)) = (&self.stabiliser, &s.imu) {
             st.apply(imu, r.tilt[k], r.phase[k], &mut self.target);
+        }
+        if let Some(f) = &mut self.force {
+            f.apply(s, r, k, self.period, &mut self.target)
+                .map_err(|e| SimError::Controller(e.to_string()))?;
         }
         let mut worst = 0.0_f64;
         for j in 0..n {
