@@ -6,7 +6,8 @@
 
 use biped_dynamics::Model;
 use biped_robots::lola::{self, LolaType};
-use biped_sim::plant::{lola_plant, PlantConfig};
+use biped_robots::plant::lola_plant;
+use biped_sim::plant::PlantConfig;
 use flate2::read::GzDecoder;
 use nalgebra::{Point3, Quaternion, UnitQuaternion, Vector3};
 use std::io::Read;

@@ -11,8 +11,9 @@ use biped_control::walk::{
     run_dynamic_walk, walk_pattern_params, DynamicWalkParams, Method, WalkController, WalkParams,
 };
 use biped_robots::lola::{self, LolaType};
+use biped_robots::plant::lola_plant;
 use biped_sim::drive::FrictionParams;
-use biped_sim::plant::{lola_plant, PlantConfig};
+use biped_sim::plant::PlantConfig;
 use biped_sim::simulation::Simulation;
 use biped_sim::Method as Integrator;
 use nalgebra::{DVector, Vector3};

@@ -6,7 +6,8 @@ use biped_control::walk::dynamic::{ForceControl, ForceGains};
 use biped_control::walk::{run_dynamic_walk, DynamicWalkParams};
 use biped_dynamics::{update_placements, Data};
 use biped_robots::lola::{self, LolaType};
-use biped_sim::plant::{lola_plant, PlantConfig};
+use biped_robots::plant::lola_plant;
+use biped_sim::plant::PlantConfig;
 use nalgebra::{DVector, Vector3};
 use proptest::prelude::*;
 

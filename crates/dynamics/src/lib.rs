@@ -91,7 +91,8 @@ pub use error::{DynamicsError, ModelError};
 pub use jacobian::{JacobianError, JacobianFrame, Jacobians};
 pub use kinematics::{forward_kinematics, update_placements};
 pub use model::{
-    Body, BodyId, BodySpec, IndexSet, JointInfo, JointModel, Model, ModelBuilder, RotorSpec,
+    Body, BodyId, BodySpec, ElasticGear, IndexSet, JointInfo, JointModel, Model, ModelBuilder,
+    RotorSpec,
 };
 pub use spatial::{Force, Motion, RigidInertia, SpatialTransform, Wrench};
 pub use subsystem::{Node, NodeKind, Subsystem};

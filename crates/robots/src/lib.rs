@@ -55,3 +55,4 @@
 pub mod calibration;
 pub mod description;
 pub mod lola;
+pub mod plant;

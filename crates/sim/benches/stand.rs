@@ -10,10 +10,11 @@
 
 use biped_dynamics::{forward_dynamics, Algorithm, Data, Wrench};
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::contact::ContactParams;
 use biped_sim::contact::ContactSet;
 use biped_sim::ode::{Method, OdeSystem};
-use biped_sim::plant::{lola_plant, urdf_plant, Armature, Plant, PlantConfig, UrdfFeet};
+use biped_sim::plant::{urdf_plant, Armature, Plant, PlantConfig, UrdfFeet};
 use biped_sim::record::Recorder;
 use biped_sim::scenario::{build, Scenario, ScenarioKind, ScenarioOptions};
 use biped_sim::simulation::Signals;

@@ -6,9 +6,10 @@
 //! unoptimised debug build; add `--release` for the real-time factor of an optimised one).
 
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::controller::{Commands, Controller};
 use biped_sim::drive::DriveMode;
-use biped_sim::plant::{lola_plant, PlantConfig};
+use biped_sim::plant::PlantConfig;
 use biped_sim::scenario::{self, ScenarioKind, ScenarioOptions};
 use biped_sim::sensors::Sensors;
 use biped_sim::simulation::Simulation;

@@ -6,9 +6,11 @@
 //! robot description, joint end stops and friction. A [`simulation::Simulation`] closes the
 //! loop: every control period it samples the [`sensors::Sensors`] (encoders, foot
 //! force/torque, IMU), runs your [`controller::Controller`], holds its commands and integrates
-//! the plant to the next period with one of the integrators of [`ode`]. Plants of the
-//! Lola-like biped and of URDF robots are ready-made ([`plant::lola_plant`],
-//! [`plant::urdf_plant`]), as are the drop, stand and sway set-ups of [`scenario`].
+//! the plant to the next period with one of the integrators of [`ode`]. Plants of URDF robots
+//! are ready-made ([`plant::urdf_plant`]); other robots plug in through [`plant::Plant::new`]
+//! with actuators from [`plant::actuator`] (the Lola-like biped's is
+//! `biped_robots::plant::lola_plant`, built that way), and the drop, stand and sway set-ups of
+//! [`scenario`] run any of them.
 //!
 //! # Example
 //!

@@ -2,8 +2,9 @@
 //! global allocator around the Lola Type 2 plant.
 
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::ode::{Method, OdeSystem};
-use biped_sim::plant::{lola_plant, PlantConfig};
+use biped_sim::plant::PlantConfig;
 use biped_sim::scenario::{build, ScenarioKind, ScenarioOptions};
 use biped_sim::simulation::Simulation;
 use biped_test_support::alloc::{count, Counting};

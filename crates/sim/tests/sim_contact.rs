@@ -5,9 +5,10 @@
 mod common;
 
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::contact::{sole_rectangle, ContactParams, FootSpec};
 use biped_sim::ode::{Method, OdeSystem};
-use biped_sim::plant::{lola_plant, Plant, PlantConfig};
+use biped_sim::plant::{Plant, PlantConfig};
 use nalgebra::{DVector, Vector3};
 use rand::{Rng, SeedableRng};
 

@@ -2,8 +2,9 @@
 //! gains blow the standing robot up within a few control periods.
 
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::controller::JointPd;
-use biped_sim::plant::{lola_plant, PlantConfig};
+use biped_sim::plant::PlantConfig;
 use biped_sim::scenario::{build, ScenarioKind, ScenarioOptions};
 use biped_sim::simulation::Simulation;
 use biped_sim::{Method, SimError};

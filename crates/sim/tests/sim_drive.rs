@@ -195,7 +195,7 @@ fn cascaded_position_over_current_loop_reaches_the_target() {
 fn lola_motor_rows_match_finite_differences_of_the_rotor_pose() {
     use biped_dynamics::mechanism::Coupling;
     use biped_robots::lola::LolaType;
-    use biped_sim::plant::lola_plant;
+    use biped_robots::plant::lola_plant;
     let lp = lola_plant(LolaType::Type2, PlantConfig::default()).unwrap();
     let plant = &lp.plant;
     let m = plant.model();

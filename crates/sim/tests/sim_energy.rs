@@ -5,9 +5,10 @@
 mod common;
 
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::drive::FrictionParams;
 use biped_sim::ode::Method;
-use biped_sim::plant::{lola_plant, Plant, PlantConfig};
+use biped_sim::plant::{Plant, PlantConfig};
 use nalgebra::DVector;
 use rand::{Rng, SeedableRng};
 

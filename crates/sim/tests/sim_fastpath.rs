@@ -8,11 +8,12 @@ mod common;
 
 use biped_dynamics::{forward_dynamics, Algorithm, Data, Wrench};
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::controller::Commands;
 use biped_sim::drive::DriveMode;
 use biped_sim::ode::OdeSystem;
 use biped_sim::plant::kinematics::QdotMap;
-use biped_sim::plant::{lola_plant, Plant, PlantConfig};
+use biped_sim::plant::{Plant, PlantConfig};
 use biped_sim::scenario::{build, ScenarioKind, ScenarioOptions};
 use nalgebra::DVector;
 use rand::{Rng, SeedableRng};

@@ -3,8 +3,9 @@
 //! commands of the wrong length or non-finite values ends the run with a typed error.
 
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::controller::{Hook, Hooked};
-use biped_sim::plant::{lola_plant, PlantConfig};
+use biped_sim::plant::PlantConfig;
 use biped_sim::scenario::{self, ScenarioKind, ScenarioOptions};
 use biped_sim::{Method, Settings, SimError};
 use std::sync::{Arc, Mutex};

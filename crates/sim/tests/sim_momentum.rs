@@ -59,7 +59,8 @@ proptest! {
 #[test]
 fn plant_rhs_kinematics_give_the_same_sample() {
     use biped_dynamics::centroidal_momentum_current;
-    use biped_sim::plant::{lola_plant, PlantConfig};
+    use biped_robots::plant::lola_plant;
+    use biped_sim::plant::PlantConfig;
     use biped_sim::OdeSystem;
     let mut plant = lola_plant(LolaType::Type2, PlantConfig::default())
         .unwrap()

@@ -3,9 +3,10 @@
 //! are internal), whatever the joint PD does.
 
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::drive::FrictionParams;
 use biped_sim::ode::Method;
-use biped_sim::plant::{lola_plant, PlantConfig};
+use biped_sim::plant::PlantConfig;
 use biped_sim::record::Recorder;
 use biped_sim::scenario::{build, ScenarioKind, ScenarioOptions};
 use biped_sim::simulation::Signals;

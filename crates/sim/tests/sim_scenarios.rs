@@ -3,10 +3,11 @@
 //! and its contact force equals its weight within 0.1 %.
 
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::controller::JointPd;
 use biped_sim::drive::DriveMode;
 use biped_sim::ode::{Method, Settings};
-use biped_sim::plant::{lola_plant, PlantConfig};
+use biped_sim::plant::PlantConfig;
 use biped_sim::scenario::{build, ScenarioKind, ScenarioOptions};
 use biped_sim::simulation::{Simulation, Summary};
 

@@ -3,9 +3,10 @@
 //! stiffly held robot on its soles, a mode the joint PD does not see.
 
 use biped_robots::lola::LolaType;
+use biped_robots::plant::lola_plant;
 use biped_sim::controller::StanceDamping;
 use biped_sim::ode::{Method, Settings};
-use biped_sim::plant::{lola_plant, urdf_plant, AnkleAxis, PlantConfig, UrdfFeet};
+use biped_sim::plant::{urdf_plant, AnkleAxis, PlantConfig, UrdfFeet};
 use biped_sim::scenario::{build, ScenarioKind, ScenarioOptions};
 use biped_sim::simulation::Summary;
 use nalgebra::Vector3;

@@ -5,12 +5,14 @@ mod ancestors;
 mod builder;
 mod coordinates;
 pub mod coupling;
+pub mod gear;
 pub(crate) mod joint;
 mod rotors;
 
 pub(crate) use ancestors::DofAncestors;
 pub use builder::{BodySpec, ModelBuilder};
 pub use coupling::{FourBar, LinearCoupling, Mechanism};
+pub use gear::ElasticGear;
 pub use joint::JointModel;
 pub use rotors::RotorSpec;
 

@@ -63,22 +63,8 @@ pub struct JointLimit {
     pub upper: f64,
 }
 
-/// An elastic Harmonic Drive gear of Type 3: link joint and motor coordinates.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ElasticGear {
-    /// Link joint name.
-    pub joint: String,
-    /// Link coordinate index (q and v).
-    pub link_q: usize,
-    /// Link velocity index.
-    pub link_v: usize,
-    /// Motor coordinate index in `q`.
-    pub motor_q: usize,
-    /// Motor velocity index.
-    pub motor_v: usize,
-    /// Gear ratio `N` (motor angle = `N` link angle when the gear is unloaded).
-    pub ratio: f64,
-}
+/// An elastic Harmonic Drive gear of Type 3 (link joint and motor coordinates).
+pub use biped_dynamics::ElasticGear;
 
 /// A built Lola-like model with its joint ranges and elastic gears.
 #[derive(Debug, Clone)]

@@ -1,15 +1,7 @@
-//! Plants of the shipped robots: the Lola-like biped (Type 2 / Type 3) and URDF models with a
-//! floating base.
-//!
-//! Lola: one actuator per actuated joint (25), end stops at the joint ranges of its parameter
-//! file ([`crate::passive`]; its drives carry the gear friction, so no joint friction).
-//! Harmonic Drive joints get a rigid gear (Type 2) or their elastic motor coordinate (Type 3); the knee gets its screw rotor; the two ankle
-//! joints get the two ankle screw rotors (rotor `k` of a multi-input mechanism drives input
-//! `k`); the kinematic vergence joint is a direct torque source. Feet and toes: see
-//! [`super::lola_feet`].
+//! Plants of URDF models with a floating base, and the parts other robots' plants are built
+//! from ([`actuator`], [`rotor_of`]; the Lola-like biped's is `biped_robots::plant`).
 
 use super::armature::{with_rotors, Armature};
-use super::lola_feet;
 use super::{Plant, PlantConfig};
 use crate::contact::{sole_rectangle, FootSpec};
 use crate::drive::{Actuator, Transmission};
@@ -18,77 +10,19 @@ use crate::passive::JointSpec;
 use biped_dynamics::model::Mechanism;
 use biped_dynamics::urdf::{self, UrdfOptions};
 use biped_dynamics::{BodyId, JointModel, Model};
-use biped_robots::lola::{self, LolaModel, LolaType};
 use nalgebra::{Point3, Vector3};
 use std::path::Path;
 
-/// A Lola plant together with the robot description it was built from.
-#[derive(Debug, Clone)]
-pub struct LolaPlant {
-    /// The plant.
-    pub plant: Plant,
-    /// Joint ranges, elastic gears and the model.
-    pub lola: LolaModel,
-}
-
-/// Builds the plant of the shipped Lola-like model.
-pub fn lola_plant(variant: LolaType, config: PlantConfig) -> Result<LolaPlant, SimError> {
-    let lola = lola::build(variant).map_err(|e| SimError::InvalidParameter {
-        what: "lola model".into(),
-        reason: e.to_string(),
-    })?;
-    let m = &lola.model;
-    let mut actuators = Vec::with_capacity(lola.limits.len());
-    for l in &lola.limits {
-        let body = m
-            .body_id(&l.name)
-            .ok_or_else(|| unknown("joint body", &l.name))?;
-        let gear = lola.gears.iter().find(|g| g.link_v == l.v_index);
-        let transmission = match gear {
-            Some(g) => Transmission::Elastic {
-                motor_q: g.motor_q,
-                motor_v: g.motor_v,
-                ratio: g.ratio,
-            },
-            None => rotor_of(m, body)?,
-        };
-        actuators.push(actuator(
-            m,
-            &config,
-            l.name.clone(),
-            l.q_index,
-            l.v_index,
-            transmission,
-        )?);
-    }
-    let feet = lola_feet::contact_entries(m, config.toe_contacts)?;
-    let stops: Vec<JointSpec> = lola
-        .limits
-        .iter()
-        .map(|l| JointSpec {
-            name: l.name.clone(),
-            q: l.q_index,
-            v: l.v_index,
-            range: Some([l.lower, l.upper]),
-            damping: 0.0,
-            friction: 0.0,
-        })
-        .collect();
-    let plant = Plant::new(m.clone(), actuators, &feet, lola.gears.clone(), config)?;
-    let plant = plant.with_passive(&stops)?;
-    Ok(LolaPlant { plant, lola })
-}
-
-pub(super) fn unknown(kind: &'static str, name: &str) -> SimError {
+pub(crate) fn unknown(kind: &'static str, name: &str) -> SimError {
     SimError::Unknown {
         kind,
         name: name.to_string(),
     }
 }
 
-/// An actuator with the configured motor and friction; nominal ratio from the motor row at
-/// neutral.
-fn actuator(
+/// An actuator of joint `name` (coordinates `q`, `v`) through `t` with the motor and friction
+/// of `c`; its nominal ratio from the motor row at neutral.
+pub fn actuator(
     m: &Model,
     c: &PlantConfig,
     name: String,
@@ -122,9 +56,10 @@ fn actuator(
     Ok(a)
 }
 
-/// The motor rotor driving joint body `joint`: a coupled part whose name contains "rotor" and
-/// whose inputs contain `joint`; of a multi-input group, the `k`-th rotor drives input `k`.
-fn rotor_of(m: &Model, joint: BodyId) -> Result<Transmission, SimError> {
+/// The transmission from the motor rotor driving joint body `joint`: a coupled part whose name
+/// contains "rotor" and whose inputs contain `joint` (a Harmonic Drive: its gear; of a
+/// multi-input group, the `k`-th rotor drives input `k`); direct without one.
+pub fn rotor_of(m: &Model, joint: BodyId) -> Result<Transmission, SimError> {
     let mut group = Vec::new();
     let mut slot = None;
     for (id, b) in m.bodies().iter().enumerate() {

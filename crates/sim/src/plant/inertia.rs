@@ -4,8 +4,8 @@
 
 use super::{Plant, PlantConfig};
 use crate::error::SimError;
+use biped_dynamics::ElasticGear;
 use biped_dynamics::{Data, Model};
-use biped_robots::lola::ElasticGear;
 use nalgebra::DVector;
 
 /// Inertias seen by one actuator \[kg m^2 or kg], for gain scheduling.

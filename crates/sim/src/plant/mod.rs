@@ -16,11 +16,10 @@ mod forces;
 mod inertia;
 pub mod kinematics;
 pub mod layout;
-mod lola_feet;
 
 pub use ankles::AnkleAxis;
 pub use armature::Armature;
-pub use build::{lola_plant, urdf_plant, LolaPlant, UrdfFeet, URDF_GEAR_RATIO};
+pub use build::{actuator, rotor_of, urdf_plant, UrdfFeet, URDF_GEAR_RATIO};
 pub use energy::Energy;
 pub use inertia::ActuatorInertia;
 pub use layout::StateLayout;
@@ -32,8 +31,8 @@ use crate::drive::{Actuator, DriveMode, FrictionLaw, FrictionParams, MotorParams
 use crate::error::{finite, SimError};
 use crate::ode::{OdeSystem, SplitSystem};
 use crate::passive::{JointSpec, PassiveJoints, PassiveParams};
+use biped_dynamics::ElasticGear;
 use biped_dynamics::{Algorithm, Data, Model, Wrench};
-use biped_robots::lola::ElasticGear;
 use kinematics::QdotMap;
 use nalgebra::DVector;
 use serde::{Deserialize, Serialize};
@@ -59,7 +58,7 @@ pub struct PlantConfig {
     #[serde(default)]
     pub passive: PassiveParams,
     /// Contact points on the toe segments of robots that have them (Lola: `l_toe` / `r_toe`,
-    /// entries `left_toe` / `right_toe`, see [`lola_plant`]); on by default. Off, a foot in
+    /// entries `left_toe` / `right_toe`, see `biped_robots::plant::lola_plant`); on by default. Off, a foot in
     /// toe-off stands on the front edge of its sole only.
     #[serde(default = "default_toe_contacts")]
     pub toe_contacts: bool,

@@ -126,7 +126,8 @@ pub struct Scenario {
 /// ```
 /// use biped_dynamics::{center_of_mass, Data};
 /// use biped_robots::lola::LolaType;
-/// use biped_sim::plant::{lola_plant, PlantConfig};
+/// use biped_sim::plant::PlantConfig;
+/// use biped_robots::plant::lola_plant;
 /// use biped_sim::scenario::{self, ScenarioKind, ScenarioOptions};
 /// use biped_sim::Method;
 ///

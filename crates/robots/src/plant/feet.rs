@@ -1,20 +1,19 @@
 //! The contact entries of the Lola plant. Feet: the bodies `l_foot` / `r_foot` with 8 sole
 //! points on the rectangle of the foot box, at the height of the sole markers `l_sole` /
-//! `r_sole`; with [`super::PlantConfig::toe_contacts`] (default) the toe segments `l_toe` /
+//! `r_sole`; with [`biped_sim::plant::PlantConfig::toe_contacts`] (default) the toe segments `l_toe` /
 //! `r_toe` are entries `left_toe` / `right_toe` of their own, parts of their feet, with the 8
 //! points of the toe box's rectangle at the sole's height; the 3 points of the toe joint line
 //! (the foot's front edge, the toe's rear edge) belong to the toe, so the foot keeps 5. The
 //! boxes' edge lengths are recovered from their inertia (`a^2 = 6 (I_yy + I_zz - I_xx) / m`,
 //! etc.), so they follow the parameter file.
 
-use super::build::unknown;
-use crate::contact::{sole_rectangle, FootSpec};
-use crate::error::SimError;
 use biped_dynamics::{BodyId, Model};
+use biped_sim::contact::{sole_rectangle, FootSpec};
+use biped_sim::SimError;
 use nalgebra::{Point3, Vector3};
 
 /// The feet `left`, `right` and, with `toes`, their toes `left_toe`, `right_toe`.
-pub(super) fn contact_entries(m: &Model, toes: bool) -> Result<Vec<FootSpec>, SimError> {
+pub fn contact_entries(m: &Model, toes: bool) -> Result<Vec<FootSpec>, SimError> {
     let mut feet = [("left", "l_foot", "l_sole"), ("right", "r_foot", "r_sole")]
         .iter()
         .map(|(name, foot, sole)| lola_foot(m, name, foot, sole))
@@ -92,4 +91,12 @@ fn lola_toe(m: &Model, name: &str, toe: &str, foot: &mut FootSpec) -> Result<Foo
         reference: center,
         part_of: Some(foot.name.clone()),
     })
+}
+
+/// The error of a body `name` of kind `kind` the model lacks.
+fn unknown(kind: &'static str, name: &str) -> SimError {
+    SimError::Unknown {
+        kind,
+        name: name.to_string(),
+    }
 }
