@@ -36,6 +36,10 @@ pub enum SegmentSource {
         entries: Vec<EntryJson>,
         /// Where the array is in the text.
         span: [usize; 2],
+        /// The entries are `[[segment.ssvs]]` tables: `span` covers their lines, from the
+        /// first header to the end of the last one's last key line, and an edit replaces them
+        /// by an `ssvs = [...]` key.
+        tables: bool,
     },
     /// The mirror image of another segment.
     MirrorOf {
@@ -174,16 +178,25 @@ struct SourceSegment {
 
 /// Every segment's name and source, in file order (empty if the text does not parse).
 pub fn segment_sources(text: &str) -> Vec<(String, SegmentSource)> {
-    let Ok(file) = toml::from_str::<SourceFile>(text) else {
+    let (Ok(file), Ok(tables)) = (
+        toml::from_str::<SourceFile>(text),
+        toml::from_str::<TableFile>(text),
+    ) else {
         return Vec::new();
     };
+    let mut tables = tables.segment.into_iter();
     let source = |s: SourceSegment| {
+        let entry_spans = tables.next().and_then(|t| t.ssvs).unwrap_or_default();
         let src = match (s.ssvs, s.mirror_of, s.version_of) {
             (Some(ssvs), _, _) => {
-                let span = utf16_span(text, ssvs.span());
+                let (span, tables) = match table_lines(text, &entry_spans) {
+                    Some(lines) => (lines, true),
+                    None => (ssvs.span(), false),
+                };
                 SegmentSource::Ssvs {
                     entries: ssvs.into_inner(),
-                    span,
+                    span: utf16_span(text, span),
+                    tables,
                 }
             }
             (None, Some(of), _) => SegmentSource::MirrorOf {
@@ -200,4 +213,39 @@ pub fn segment_sources(text: &str) -> Vec<(String, SegmentSource)> {
         (s.name, src)
     };
     file.segment.into_iter().map(source).collect()
+}
+
+/// The keys of one `ssvs` entry with their places in the text.
+#[derive(Deserialize)]
+struct EntrySpans {
+    point: Option<Spanned<toml::Value>>,
+    line: Option<Spanned<toml::Value>>,
+    triangle: Option<Spanned<toml::Value>>,
+    radius: Option<Spanned<toml::Value>>,
+    mirror_copy: Option<Spanned<toml::Value>>,
+}
+
+#[derive(Deserialize)]
+struct TableSegment {
+    ssvs: Option<Vec<Spanned<EntrySpans>>>,
+}
+
+#[derive(Deserialize)]
+struct TableFile {
+    #[serde(default)]
+    segment: Vec<TableSegment>,
+}
+
+/// The lines of a segment's `[[segment.ssvs]]` tables (byte range), if its entries are
+/// written so.
+fn table_lines(text: &str, entries: &[Spanned<EntrySpans>]) -> Option<std::ops::Range<usize>> {
+    let first = entries.first()?.span();
+    if !text[first.clone()].starts_with("[[") {
+        return None;
+    }
+    let last = entries.last()?.get_ref();
+    let keys = [&last.point, &last.line, &last.triangle, &last.radius];
+    let keys = keys.into_iter().chain([&last.mirror_copy]).flatten();
+    let end = keys.map(|k| k.span().end).max()?;
+    Some(line_start(text, first.start)..line_end(text, end))
 }

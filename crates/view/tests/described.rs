@@ -57,10 +57,21 @@ fn g1_scene_has_its_bodies_and_ssv_segments_and_save_is_refused() {
     assert!(ssv["file"].as_str().unwrap().ends_with("g1_ssv.toml"));
     let why = ssv["read_only"].as_str().unwrap();
     assert!(why.contains("--ssv"), "{why}");
-
-    // Edits are checked, a save is refused and the bundled file stays as it is.
+    // `biped ssv fit` writes the entries as [[segment.ssvs]] tables: their lines are located.
     let path = described.description.collision_model.clone().unwrap();
     let text = std::fs::read_to_string(&path).unwrap();
+    let knee = ssv["segments"].as_array().unwrap().iter();
+    let knee = knee
+        .clone()
+        .find(|s| s["name"] == "left_knee_link")
+        .unwrap();
+    assert_eq!(knee["source"]["tables"], true);
+    let lines = at(&text, &knee["source"]["span"]);
+    assert!(lines.starts_with("[[segment.ssvs]]\nline = [["), "{lines}");
+    assert!(lines.ends_with("radius = 0.05760761397928504\n"), "{lines}");
+    assert_eq!(lines.matches("[[segment.ssvs]]").count(), 1);
+
+    // Edits are checked, a save is refused and the bundled file stays as it is.
     let (status, _) = server.json("POST", "/api/ssv/check", text.as_bytes());
     assert_eq!(status, 200);
     let (status, answer) = server.json("PUT", "/api/ssv", text.as_bytes());
