@@ -10,10 +10,11 @@
 //!   `{"type": "box"|"cylinder"|"sphere"|"capsule"|"mesh", ...}` with a mesh's `url`
 //!   (`/api/mesh/K`). The model: `{"file", "activation_distance", "bodies": [{"name",
 //!   "body", "offset"}], "segments": [{"name", "body", "ssvs": [{"kind", "points",
-//!   "radius"}], "source"}], "pairs"}`; `source` is `{"kind": "ssvs", "entries", "span"}`
-//!   (the `ssvs` array's place in the file text, UTF-16 indices), `{"kind": "mirror_of",
-//!   "of", "lines"}` (the spans of its `mirror_of` and `plane` lines, or `null`) or `{"kind":
-//!   "version_of", "of", "keep", "span"}` (the `keep` array's place); `pair_list` is the
+//!   "radius"}], "source"}], "pairs"}`; `source` is `{"kind": "ssvs", "entries", "span",
+//!   "tables"}` (the `ssvs` array's place in the file text, UTF-16 indices, or with `tables`
+//!   that of its `[[segment.ssvs]]` tables), `{"kind": "mirror_of", "of", "lines"}` (the
+//!   spans of its `mirror_of` and `plane` lines, or `null`) or `{"kind": "version_of", "of",
+//!   "keep", "span"}` (the `keep` array's place); `pair_list` is the
 //!   `pairs = [...]` array with its `span` (or `null`), `pair_tables` the `[[pair]]` tables
 //!   `[{"a", "b", "span"}]` (`null` if a pair is written as neither), `read_only` why a save
 //!   is refused (`--robot` without `--ssv`) or `null`.
