@@ -163,7 +163,7 @@ export function createEditor(view, layer, model, text, at, showPairs) {
     s.vertex = 0;
     const info = !g ? '' : g.source.kind === 'ssvs' ? `on body ${s.model.bodies[g.body].name}, ${g.ssvs.length} SSVs`
       : g.source.kind === 'version_of' ? `version of ${g.source.of}: the SSVs it keeps below`
-        : `mirror of ${g.source.of}: edit that segment, or detach this one`;
+        : `mirror of ${g.source.of}: edit that segment${g.source.lines ? ', or detach this one' : ''}`;
     $('segment-info').textContent = info;
     renderEntries();
     renderPairs();
