@@ -2,7 +2,9 @@
 # Browser tests of `biped view`, with all their set-up: builds the CLI, installs Debian's
 # chromium when /usr/bin/chromium is missing (as root, like CI), installs the page's npm
 # packages from the lockfile and builds the bundle, walks the robot two steps for a
-# recording, serves it with a copy of the Lola collision model on a free 127.0.0.1 port,
+# recording, serves it with a copy of the Lola collision model on a free 127.0.0.1 port (and
+# another copy for the panel tests, a small URDF robot, one drawn from a VRML97 file and the
+# G1 of `--robot g1`),
 # runs web/tests with node's test runner (playwright-core driving chromium) and stops the
 # server with SIGINT, which must end it cleanly. Screenshots: out/view/*.png.
 # Usage: scripts/test_view.sh   (CARGO_TARGET_DIR is honoured)
@@ -129,6 +131,28 @@ cat >"$out/urdf/robot.urdf" <<URDF
 </robot>
 URDF
 
+# A robot whose one visual is a VRML97 box (an IndexedFaceSet), drawn by three's VRMLLoader.
+mkdir -p "$out/vrml"
+cat >"$out/vrml/box.wrl" <<'WRL'
+#VRML V2.0 utf8
+# A 0.2 m cube, its six faces as quads.
+Shape {
+  appearance Appearance { material Material { diffuseColor 0.85 0.35 0.1 } }
+  geometry IndexedFaceSet {
+    coord Coordinate { point [ -0.1 -0.1 -0.1, 0.1 -0.1 -0.1, 0.1 0.1 -0.1, -0.1 0.1 -0.1,
+                               -0.1 -0.1 0.1, 0.1 -0.1 0.1, 0.1 0.1 0.1, -0.1 0.1 0.1 ] }
+    coordIndex [ 0 3 2 1 -1, 4 5 6 7 -1, 0 1 5 4 -1, 1 2 6 5 -1, 2 3 7 6 -1, 3 0 4 7 -1 ]
+  }
+}
+WRL
+cat >"$out/vrml/robot.urdf" <<URDF
+<robot name="test_vrml">
+  <link name="base">$inertial
+    <visual><origin xyz="0 0 0.3"/><geometry><mesh filename="box.wrl"/></geometry></visual></link>
+</robot>
+URDF
+cp crates/robots/data/lola_ssv.toml "$out/tables.toml"
+
 servers=()
 stop() { for s in "${servers[@]}"; do kill -INT "$s" 2>/dev/null || true; wait "$s" 2>/dev/null || true; done; }
 trap stop EXIT
@@ -150,9 +174,15 @@ serve lola --lola type2 --ssv "$out/model.toml" --recording "$out/walk"
 lola_url=$url
 serve urdf --urdf "$out/urdf/robot.urdf" --floating
 urdf_url=$url
+serve vrml --urdf "$out/vrml/robot.urdf" --floating
+vrml_url=$url
+serve tables --lola type2 --ssv "$out/tables.toml" --recording "$out/walk"
+tables_url=$url
+serve g1 --robot g1
+g1_url=$url
 
-(cd web && VIEW_URL=$lola_url VIEW_URDF_URL=$urdf_url VIEW_SSV=$out/model.toml BIPED=$biped OUT=$out \
-  node --test tests/)
+(cd web && VIEW_URL=$lola_url VIEW_URDF_URL=$urdf_url VIEW_VRML_URL=$vrml_url VIEW_TABLES_URL=$tables_url \
+  VIEW_G1_URL=$g1_url VIEW_SSV=$out/model.toml VIEW_TABLES_SSV=$out/tables.toml BIPED=$biped OUT=$out node --test tests/)
 
 trap - EXIT
 for s in "${servers[@]}"; do

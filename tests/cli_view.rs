@@ -125,3 +125,75 @@ fn bad_inputs_are_one_located_line() {
         &["--host: `no such host!` is not an IP address"],
     );
 }
+
+/// Starts `biped view --port 0 ARGS`; returns the child and the address it prints.
+fn start(args: &[&str]) -> (std::process::Child, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_biped"))
+        .args(["view", "--port", "0"])
+        .args(args)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut first)
+        .unwrap();
+    let addr = first.trim_end().strip_prefix("serving http://");
+    let addr = addr.and_then(|a| a.strip_suffix('/'));
+    let addr = addr.unwrap_or_else(|| panic!("first line: {first:?}"));
+    (child, addr.to_string())
+}
+
+#[test]
+fn robot_g1_serves_its_urdf_bodies_and_ssv_model() {
+    let (mut child, addr) = start(&["--robot", "g1"]);
+    let (status, body) = get(&addr, "/api/scene");
+    assert!(status.contains(" 200 "), "{status}");
+    let scene: serde_json::Value = serde_json::from_str(&body).unwrap();
+    let bodies = scene["bodies"].as_array().unwrap();
+    assert_eq!(bodies.len(), 30, "the floating pelvis and 29 joints");
+    assert!(bodies.iter().any(|b| b["name"] == "left_ankle_roll_link"));
+    let segments = scene["ssv"]["segments"].as_array().unwrap();
+    assert_eq!(segments.len(), 30);
+    assert!(scene["ssv"]["file"]
+        .as_str()
+        .unwrap()
+        .ends_with("g1_ssv.toml"));
+    assert!(scene["ssv"]["read_only"]
+        .as_str()
+        .unwrap()
+        .contains("--ssv"));
+    let (status, body) = get(&addr, "/api/ssv");
+    assert!(status.contains(" 200 "), "{status}");
+    assert!(body.contains("[[segment]]"));
+    let killed = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    assert!(child.wait().unwrap().success());
+}
+
+#[test]
+fn robot_conflicts_and_bad_descriptions_are_one_line() {
+    fails_with(
+        &["view", "--robot", "g1", "--lola", "type2"],
+        &["--robot", "--lola"],
+    );
+    fails_with(
+        &["view", "--robot", "g1", "--urdf", "x.urdf"],
+        &["--robot", "--urdf"],
+    );
+    fails_with(&["view", "--robot", "h2"], &["--robot", "h2", "g1, talos"]);
+    fails_with(&["view", "--package-path", "x"], &["--urdf", "--robot"]);
+    let dir = temp("bad_robot");
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "name = \"x\"\nurdf = 3\n").unwrap();
+    let bad = bad.to_str().unwrap();
+    fails_with(&["view", "--robot", bad], &[&format!("{bad}:2: "), "urdf"]);
+    let missing = dir.join("missing.toml");
+    let missing = missing.to_str().unwrap();
+    fails_with(&["view", "--robot", missing], &[missing]);
+}

@@ -13,6 +13,7 @@ use std::process::ExitCode;
 /// Arguments of `biped view`.
 #[derive(Args)]
 #[command(long_about = VIEW_HELP)]
+#[command(group(clap::ArgGroup::new("urdf_robot").args(["urdf", "robot"])))]
 pub struct ViewArgs {
     /// Port to listen on (0: a free one).
     #[arg(long, default_value_t = 8765, allow_hyphen_values = true)]
@@ -20,17 +21,21 @@ pub struct ViewArgs {
     /// IP address to listen on (or `localhost`); another than 127.0.0.1 serves other machines.
     #[arg(long, default_value = "127.0.0.1", allow_hyphen_values = true)]
     host: String,
-    /// Show the Lola-like biped: `type2` or `type3` (without --urdf: type2).
-    #[arg(long, value_name = "TYPE", conflicts_with = "urdf")]
+    /// Show the Lola-like biped: `type2` or `type3` (without --urdf or --robot: type2).
+    #[arg(long, value_name = "TYPE", conflicts_with_all = ["urdf", "robot"])]
     lola: Option<LolaType>,
+    /// Show a described robot: `g1`, `talos` or a robot description FILE.toml (its URDF,
+    /// floating base and SSV model, which without --ssv is shown but not saved).
+    #[arg(long, value_name = "NAME")]
+    robot: Option<String>,
     /// Show a URDF robot (its `<visual>` geometry).
     #[arg(long, value_name = "FILE")]
     urdf: Option<PathBuf>,
     /// Give the URDF root link a free joint named "root" (what `biped walk`/`simulate` use).
     #[arg(long, requires = "urdf")]
     floating: bool,
-    /// Folder to look up `package://PKG/...` meshes in, before ROS_PACKAGE_PATH (repeatable).
-    #[arg(long = "package-path", value_name = "DIR", requires = "urdf")]
+    /// Folder to look up `package://PKG/...` files in, before ROS_PACKAGE_PATH (repeatable).
+    #[arg(long = "package-path", value_name = "DIR", requires = "urdf_robot")]
     package_path: Vec<PathBuf>,
     /// Collision-model file (TOML) to show and edit in place.
     #[arg(long, value_name = "FILE")]
@@ -47,13 +52,20 @@ const VIEW_HELP: &str = "\
 Serve the viewer and SSV modelling tool: open the printed address in a browser.
 
 The first line of stdout is `serving http://HOST:PORT/`. The page shows the robot (Lola's link
-boxes or a URDF's visual geometry), the collision model (--ssv, edited in place: a save is
-checked with the loader of `biped ssv model` and written only if it loads) and plays back a
+boxes, a URDF's visual geometry or a described robot's URDF), the collision model (--ssv, edited
+in place: a save is checked with the loader of `biped ssv model` and written only if it loads;
+with --robot alone the description's model, shown and checked, not saved) and plays back a
 recording (--recording: the output folder of `biped walk` or `biped simulate`). Ctrl-C stops.
 The page is built from web/ with `npm ci && npm run build` (Node.js and npm); the JSON API
 under /api/ (documented in the biped_view crate) works without it.";
 
 fn robot_source(args: &ViewArgs) -> Result<RobotSource, String> {
+    if let Some(name) = &args.robot {
+        return Ok(RobotSource::Description {
+            file: crate::cli::bench_ik::robot_file(name)?,
+            package_path: args.package_path.clone(),
+        });
+    }
     match (&args.urdf, args.lola) {
         (Some(path), _) => Ok(RobotSource::Urdf {
             path: path.clone(),

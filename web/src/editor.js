@@ -3,7 +3,7 @@
 // every edit is checked by the server (same loader as `biped ssv model`), which answers the
 // expanded model and the pair distances; save writes the file.
 import { checkSsv, putSsv } from './api.js';
-import { mirrored, pairsText, splice, vertices } from './format.js';
+import { addPairTable, cut, detached, mirrored, pairsText, splice, vertices } from './format.js';
 import { createHandle } from './handle.js';
 import { renderEntries as renderEntriesInto, renderKeep, renderPairs as renderPairsInto } from './panels.js';
 
@@ -34,7 +34,7 @@ export function createEditor(view, layer, model, text, at, showPairs) {
 
   // Checks the candidate text; a stale answer (an edit came after it) is dropped.
   async function check(candidate) {
-    s.pending = candidate === undefined ? splice(s.text, segment().source.span, s.entries) : candidate;
+    s.pending = candidate === undefined ? splice(s.text, segment().source, s.entries) : candidate;
     const seq = ++s.seq;
     s.busy = true;
     $('status').textContent = 'checking…';
@@ -83,7 +83,7 @@ export function createEditor(view, layer, model, text, at, showPairs) {
   // The handle at the selected vertex (or, for the radius, one radius along the body x axis).
   function placeHandle() {
     const frame = frameGroup();
-    const e = editable() && s.entries[s.entry];
+    const e = editable() && s.entries && s.entries[s.entry];
     if (!frame || !e) {
       handle.hide();
       return;
@@ -94,7 +94,7 @@ export function createEditor(view, layer, model, text, at, showPairs) {
 
   function fromHandle(final) {
     const frame = frameGroup();
-    const e = editable() && s.entries[s.entry];
+    const e = editable() && s.entries && s.entries[s.entry];
     if (!frame || !e) return;
     const local = handle.local(frame);
     const round = (x) => Math.round(x * 1e4) / 1e4;
@@ -128,11 +128,31 @@ export function createEditor(view, layer, model, text, at, showPairs) {
       check(s.text.slice(0, g.source.span[0]) + `[${keep.join(', ')}]` + s.text.slice(g.source.span[1])));
   }
 
+  // The new text of a pair edit of the panel: the array's new pairs, a table cut or added.
+  function pairEdit({ list, cut: span, add }) {
+    const array = s.model.pair_list;
+    if (list) return s.text.slice(0, array.span[0]) + pairsText(list) + s.text.slice(array.span[1]);
+    if (span) return cut(s.text, span);
+    return addPairTable(s.text, s.model.pair_tables, ...add);
+  }
+
   function renderPairs() {
     renderVersion();
-    const list = s.model.pair_list;
-    renderPairsInto($('segment-pairs'), s.model, s.segment, (pairs) =>
-      check(s.text.slice(0, list.span[0]) + pairsText(pairs) + s.text.slice(list.span[1])));
+    renderDetach();
+    renderPairsInto($('segment-pairs'), s.model, s.segment, (change) => check(pairEdit(change)));
+  }
+
+  // A mirrored segment can be detached: made explicit with its current (mirrored) SSVs.
+  function renderDetach() {
+    const g = segment();
+    $('detach-row').hidden = !g || g.source.kind !== 'mirror_of' || !g.source.lines;
+  }
+
+  async function detach() {
+    const g = segment();
+    if (!g || g.source.kind !== 'mirror_of' || !g.source.lines) return;
+    await check(detached(s.text, g.source.lines, g.ssvs));
+    if (segment().source.kind === 'ssvs') select(g.name);
   }
 
   function select(name) {
@@ -143,7 +163,7 @@ export function createEditor(view, layer, model, text, at, showPairs) {
     s.vertex = 0;
     const info = !g ? '' : g.source.kind === 'ssvs' ? `on body ${s.model.bodies[g.body].name}, ${g.ssvs.length} SSVs`
       : g.source.kind === 'version_of' ? `version of ${g.source.of}: the SSVs it keeps below`
-        : `mirror of ${g.source.of}: edit that segment`;
+        : `mirror of ${g.source.of}: edit that segment${g.source.lines ? ', or detach this one' : ''}`;
     $('segment-info').textContent = info;
     renderEntries();
     renderPairs();
@@ -179,6 +199,9 @@ export function createEditor(view, layer, model, text, at, showPairs) {
     r.onchange = () => { s.mode = r.value; placeHandle(); };
   });
   $('save').onclick = save;
+  $('detach').onclick = detach;
+  $('read-only').hidden = !model.read_only;
+  $('read-only').textContent = model.read_only ? 'the robot description\'s model: edits are checked, not saved (--ssv FILE edits a file)' : '';
   list.value = model.segments[0]?.name;
   select(list.value);
   return {

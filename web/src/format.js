@@ -32,8 +32,11 @@ export function arrayText(entries) {
   return `[\n${entries.map((e) => `  ${entryText(e)},\n`).join('')}]`;
 }
 
-export function splice(text, span, entries) {
-  return text.slice(0, span[0]) + arrayText(entries) + text.slice(span[1]);
+// `text` with the entries of a segment's source (`{ span, tables }` of the API) replaced; entries
+// written as `[[segment.ssvs]]` tables become an `ssvs = [...]` key in their place.
+export function splice(text, { span, tables }, entries) {
+  const array = tables ? `ssvs = ${arrayText(entries)}\n` : arrayText(entries);
+  return text.slice(0, span[0]) + array + text.slice(span[1]);
 }
 
 // The entry mirrored about a body axis plane (`xy`, `yz`, `xz`).
@@ -49,4 +52,36 @@ export function mirrored(entry, plane) {
 // The text of the `pairs = [...]` array.
 export function pairsText(pairs) {
   return `[\n${pairs.map(([a, b]) => `  ["${a}", "${b}"],\n`).join('')}]`;
+}
+
+// A `[[pair]]` table of segments a and b.
+export function pairTable(a, b) {
+  return `[[pair]]\na = ${JSON.stringify(a)}\nb = ${JSON.stringify(b)}\n`;
+}
+
+// `text` with a new `[[pair]]` table after the last of `tables` (or at the end of the file).
+export function addPairTable(text, tables, a, b) {
+  const at = tables.length > 0 ? tables[tables.length - 1].span[1] : text.length;
+  const before = text.slice(0, at);
+  const gap = before === '' || before.endsWith('\n\n') ? '' : before.endsWith('\n') ? '\n' : '\n\n';
+  return before + gap + pairTable(a, b) + text.slice(at);
+}
+
+// `text` without the `[start, end)` span.
+export const cut = (text, [start, end]) => text.slice(0, start) + text.slice(end);
+
+// An explicit `ssvs` entry of an SSV as the API expands it (kind, points, radius).
+export function entryOf(ssv) {
+  const geometry = ssv.kind === 'point' ? ssv.points[0] : ssv.points;
+  return { [ssv.kind]: geometry, radius: ssv.radius };
+}
+
+// `text` with a mirrored segment made explicit: its `mirror_of` line becomes the `ssvs` array
+// of its current SSVs and its `plane` line goes (`lines`: the spans of the two lines).
+export function detached(text, lines, ssvs) {
+  const [first, second] = [...lines].sort((p, q) => p[0] - q[0]);
+  const array = `ssvs = ${arrayText(ssvs.map(entryOf))}\n`;
+  const replaced = (span) => (span === lines[0] ? array : '');
+  return text.slice(0, first[0]) + replaced(first) + text.slice(first[1], second[0]) + replaced(second)
+    + text.slice(second[1]);
 }

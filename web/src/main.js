@@ -78,7 +78,7 @@ async function main() {
     $('show-ssv').onchange = (e) => layer.setVisible(e.target.checked);
     await distances();
   }
-  window.bipedView = { scene, view, robot, playback, editor };
+  window.bipedView = { scene, view, robot, playback, editor, plot };
   document.body.dataset.ready = '1';
 }
 

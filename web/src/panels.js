@@ -46,32 +46,36 @@ export function renderEntries(box, s, pick, changed) {
   });
 }
 
-// The pairs of segment `name` with remove buttons, and a choice to add one; `edit(pairs)`
-// receives the new list.
+// The pairs of segment `name` with remove buttons, and a choice to add one, from the file's
+// `pairs = [...]` array and its `[[pair]]` tables. `edit` receives `{ list }` (the array's new
+// pairs), `{ cut }` (the span of a table to remove) or `{ add: [a, b] }` (a new table).
 export function renderPairs(box, model, name, edit) {
   box.replaceChildren();
   const list = model.pair_list;
+  const tables = model.pair_tables;
   if (!name) return;
-  if (!list) {
-    box.textContent = 'pairs: written as [[pair]] tables, edit them in the file';
+  if (!tables) {
+    box.textContent = 'pairs: written neither as pairs = [...] nor as [[pair]] tables, edit them in the file';
     return;
   }
   box.append('pairs: ');
-  list.pairs.forEach(([a, b], i) => {
+  const button = ([a, b], remove) => {
     if (a !== name && b !== name) return;
     const x = document.createElement('button');
     x.className = 'pair';
     x.title = 'remove this pair';
     x.textContent = `${a === name ? b : a} ×`;
-    x.onclick = () => edit(list.pairs.filter((_, j) => j !== i));
+    x.onclick = remove;
     box.append(x);
-  });
+  };
+  if (list) list.pairs.forEach((p, i) => button(p, () => edit({ list: list.pairs.filter((_, j) => j !== i) })));
+  tables.forEach((t) => button([t.a, t.b], () => edit({ cut: t.span })));
   const other = document.createElement('select');
   other.id = 'pair-with';
   model.segments.filter((g) => g.name !== name).forEach((g) => other.add(new Option(g.name, g.name)));
   const add = document.createElement('button');
   add.textContent = 'add pair';
-  add.onclick = () => edit([...list.pairs, [name, other.value]]);
+  add.onclick = () => edit(list ? { list: [...list.pairs, [name, other.value]] } : { add: [name, other.value] });
   box.append(' with ', other, add);
 }
 

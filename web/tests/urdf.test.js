@@ -3,26 +3,15 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { chromium } from 'playwright-core';
+import { openPage } from './helpers.js';
 
 const { VIEW_URDF_URL, OUT } = process.env;
-const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
 let browser;
 let page;
 const problems = [];
 
 before(async () => {
-  browser = await chromium.launch({
-    executablePath: CHROMIUM,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--use-angle=swiftshader',
-      '--enable-unsafe-swiftshader', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  });
-  page = await browser.newPage({ viewport: { width: 1000, height: 700 } });
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
-  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-  await page.goto(VIEW_URDF_URL);
-  await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 60000 });
+  ({ browser, page } = await openPage(VIEW_URDF_URL, problems, { width: 1000, height: 700 }));
 });
 
 after(async () => {

@@ -6,85 +6,37 @@ import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { chromium } from 'playwright-core';
+import { canvasPixels as pixelsOf, changedShare, openPage, putModel, withNeutralPose } from './helpers.js';
 
 const { VIEW_URL, VIEW_SSV, BIPED, OUT } = process.env;
-const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
 let browser;
 let page;
 const problems = [];
 // Set while a test makes the server refuse an edit: the browser logs that 422 answer.
 let refusalExpected = false;
 
-// Pixel statistics of the WebGL canvas: distinct colours and, against an earlier image,
-// the share of pixels that changed.
-async function canvasPixels() {
-  return page.evaluate(() => {
-    const gl = window.bipedView.view.renderer.domElement;
-    const c = document.createElement('canvas');
-    c.width = 320;
-    c.height = Math.round((320 * gl.height) / gl.width);
-    const ctx = c.getContext('2d');
-    ctx.drawImage(gl, 0, 0, c.width, c.height);
-    return Array.from(ctx.getImageData(0, 0, c.width, c.height).data);
-  });
-}
+const canvasPixels = () => pixelsOf(page);
 function distinctColours(px) {
   const set = new Set();
   for (let i = 0; i < px.length; i += 4) set.add((px[i] << 16) | (px[i + 1] << 8) | px[i + 2]);
   return set.size;
 }
-function changedShare(a, b) {
-  let changed = 0;
-  for (let i = 0; i < a.length; i += 4) {
-    if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 30) changed += 1;
-  }
-  return changed / (a.length / 4);
-}
 const shot = (name) => page.locator('#viewport').screenshot({ path: join(OUT, name) });
 const status = () => page.locator('#status').textContent();
 const ssvModel = (file) => execFileSync(BIPED, ['ssv', 'model', file], { encoding: 'utf8' });
 
-// Roll-pitch-yaw (extrinsic x-y-z) of a unit quaternion [x, y, z, w].
-function rpy([x, y, z, w]) {
-  return [Math.atan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y)),
-    Math.asin(Math.max(-1, Math.min(1, 2 * (w * y - z * x)))),
-    Math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))];
-}
-
 // `biped ssv model` evaluates a named posture: the file gets the neutral pose the server
-// reports, written through the API (the Lola model's collision bodies are its body frames).
+// reports, written through the API.
 async function addNeutralPose() {
-  const scene = await (await fetch(`${VIEW_URL}api/scene`)).json();
-  const text = await (await fetch(`${VIEW_URL}api/ssv`)).text();
-  if (text.includes('[pose.')) return;
-  const lines = scene.ssv.bodies.map((b) => {
-    assert.deepEqual(b.offset.position, [0, 0, 0]);
-    const p = scene.neutral[b.body];
-    return `${b.name} = { position = [${p.position.join(', ')}], rpy = [${rpy(p.quaternion).join(', ')}] }`;
-  });
-  const put = await fetch(`${VIEW_URL}api/ssv`, { method: 'PUT', body: `${text}\n[pose.neutral]\n${lines.join('\n')}\n` });
-  assert.equal(put.status, 200, await put.text());
+  await putModel(VIEW_URL, (await withNeutralPose(VIEW_URL)).text);
 }
 
 before(async () => {
   mkdirSync(OUT, { recursive: true });
   await addNeutralPose();
-  browser = await chromium.launch({
-    executablePath: CHROMIUM,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--use-angle=swiftshader',
-      '--enable-unsafe-swiftshader', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  });
-  page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-  page.on('console', (m) => {
-    // swiftshader's performance notes are the driver's, not the page's
-    const refusal = refusalExpected && /status of 422/.test(m.text()) && m.location().url.includes('/api/ssv');
-    if (m.type() === 'error' && !refusal) problems.push(`console: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-  await page.goto(VIEW_URL);
-  await page.waitForFunction(() => document.body.dataset.ready, null, { timeout: 60000 });
+  // The 422 answer of a refused edit is logged by the browser while a test expects it.
+  const refusal = (m) => refusalExpected && /status of 422/.test(m.text()) && m.location().url.includes('/api/ssv');
+  ({ browser, page } = await openPage(VIEW_URL, problems, { width: 1280, height: 800 }, refusal));
 });
 
 after(async () => {

@@ -3,7 +3,8 @@
 //! back as a whole only when the new text loads.
 
 use crate::robot::{PoseJson, Robot};
-use crate::source::{pair_list, segment_sources, PairListJson, SegmentSource};
+use crate::source::SegmentSource;
+use crate::source::{pair_list, pair_tables, segment_sources, PairListJson, PairTableJson};
 use crate::ViewError;
 use biped_ssv::format::{self, LoadedModel};
 use biped_ssv::{PairDistance, Ssv};
@@ -31,6 +32,9 @@ pub struct CollisionFile {
     pub loaded: LoadedModel,
     /// Per collision-model body, its frame on the robot.
     pub frames: Vec<Frame>,
+    /// Why the file may not be written (a robot description's own model), if so: edits are
+    /// checked, a save is refused with this message.
+    pub read_only: Option<String>,
 }
 
 /// One SSV as sent to the page: kind, 1-3 points (body frame) and radius.
@@ -106,6 +110,11 @@ pub struct ModelJson {
     pub pairs: Vec<[String; 2]>,
     /// The file's `pairs = [...]` array, which the page edits (`null` without one).
     pub pair_list: Option<PairListJson>,
+    /// The file's `[[pair]]` tables, which the page edits too (`null` when a pair is written
+    /// as neither).
+    pub pair_tables: Option<Vec<PairTableJson>>,
+    /// Why a save is refused (the model of a `--robot` description), or `null`.
+    pub read_only: Option<String>,
 }
 
 /// One pair's distance at a posture.
@@ -141,12 +150,16 @@ impl CollisionFile {
             text,
             loaded,
             frames,
+            read_only: None,
         })
     }
 
     /// Replaces the file by `text` if it loads and binds; the file is written as a whole
     /// (temporary sibling, then rename), and left as it was on any error.
     pub fn replace(&mut self, text: String, robot: &Robot) -> Result<(), ViewError> {
+        if let Some(why) = &self.read_only {
+            return Err(ViewError::ReadOnly(why.clone()));
+        }
         let new = Self::from_text(&self.path, text, robot)?;
         biped_sim::record::write_whole(&self.path, |tmp| std::fs::write(tmp, &new.text))
             .map_err(|e| ViewError::Io(format!("{}: cannot write: {e}", self.path.display())))?;
@@ -186,6 +199,8 @@ impl CollisionFile {
             segments: segments.collect(),
             pairs: model.pairs().iter().map(pair).collect(),
             pair_list: pair_list(&self.text),
+            pair_tables: pair_tables(&self.text),
+            read_only: self.read_only.clone(),
         }
     }
 

@@ -10,14 +10,18 @@
 //!   `{"type": "box"|"cylinder"|"sphere"|"capsule"|"mesh", ...}` with a mesh's `url`
 //!   (`/api/mesh/K`). The model: `{"file", "activation_distance", "bodies": [{"name",
 //!   "body", "offset"}], "segments": [{"name", "body", "ssvs": [{"kind", "points",
-//!   "radius"}], "source"}], "pairs"}`; `source` is `{"kind": "ssvs", "entries", "span"}`
-//!   (the `ssvs` array's place in the file text, UTF-16 indices), `{"kind": "mirror_of",
-//!   "of"}` or `{"kind": "version_of", "of", "keep", "span"}` (the `keep` array's place);
-//!   `pair_list` is the `pairs = [...]` array with its `span` (or `null`).
+//!   "radius"}], "source"}], "pairs"}`; `source` is `{"kind": "ssvs", "entries", "span",
+//!   "tables"}` (the `ssvs` array's place in the file text, UTF-16 indices, or with `tables`
+//!   that of its `[[segment.ssvs]]` tables), `{"kind": "mirror_of", "of", "lines"}` (the
+//!   spans of its `mirror_of` and `plane` lines, or `null`) or `{"kind": "version_of", "of",
+//!   "keep", "span"}` (the `keep` array's place); `pair_list` is the
+//!   `pairs = [...]` array with its `span` (or `null`), `pair_tables` the `[[pair]]` tables
+//!   `[{"a", "b", "span"}]` (`null` if a pair is written as neither), `read_only` why a save
+//!   is refused (`--robot` without `--ssv`) or `null`.
 //! * `GET /api/ssv` — the model file's text. `PUT /api/ssv` — new text: loaded with the same
 //!   loader as `biped ssv model` and bound to the robot; on success written as a whole and
 //!   answered 200 with `{"ssv": model}`; otherwise 422 `{"error": "FILE:LINE: ..."}` and the
-//!   file left as it was.
+//!   file left as it was (403 for a read-only model).
 //! * `POST /api/ssv/check?frame=K[&recording=NAME]` — text as for `PUT`, nothing written: `{"ssv", "pairs"}` or
 //!   422 `{"error"}` (what the page uses while editing).
 //! * `GET /api/distances?frame=K[&recording=NAME]` — `{"activation_distance", "pairs": [{"a",
@@ -35,6 +39,7 @@
 pub mod api;
 pub mod collision;
 pub mod csv;
+mod description;
 mod files;
 mod ground;
 pub mod markers;
@@ -63,4 +68,7 @@ pub enum ViewError {
     /// A file could not be written.
     #[error("{0}")]
     Io(String),
+    /// The file may not be written (the collision model of a `--robot` description).
+    #[error("{0}")]
+    ReadOnly(String),
 }

@@ -23,6 +23,14 @@ pub enum RobotSource {
         /// Folders searched for `package://` URIs (before `ROS_PACKAGE_PATH`).
         package_path: Vec<PathBuf>,
     },
+    /// A robot description file (`biped_robots::description`): its URDF, floating base and
+    /// collision model.
+    Description {
+        /// The description file.
+        file: PathBuf,
+        /// Folders searched for `package://` URIs (before `$ROBOTS` and `ROS_PACKAGE_PATH`).
+        package_path: Vec<PathBuf>,
+    },
 }
 
 /// A pose as sent to the page: position and unit quaternion `[x, y, z, w]`.
@@ -132,6 +140,9 @@ impl Robot {
                 floating,
                 package_path,
             } => crate::urdf::urdf_robot(path, *floating, package_path),
+            RobotSource::Description { file, package_path } => {
+                Ok(crate::description::load(file, package_path)?.0)
+            }
         }
     }
 }

@@ -57,7 +57,33 @@ pub(crate) fn urdf_robot(
             }
         }
     }
+    robot.warnings = collapse_unresolved(std::mem::take(&mut robot.warnings));
     Ok(robot)
+}
+
+/// The warnings with those of meshes not drawn for one same reason (a package not found,
+/// as for every mesh of a robot whose package is not installed) folded into the first.
+fn collapse_unresolved(warnings: Vec<String>) -> Vec<String> {
+    const NOT_DRAWN: &str = ": mesh not drawn: ";
+    let mut out: Vec<String> = Vec::new();
+    let mut counts: Vec<(usize, String, usize)> = Vec::new(); // (index in out, reason, more)
+    for w in warnings {
+        let reason = w.split_once(NOT_DRAWN).map(|(_, r)| r.to_string());
+        match reason {
+            Some(r) => match counts.iter_mut().find(|(_, seen, _)| *seen == r) {
+                Some((_, _, more)) => *more += 1,
+                None => {
+                    counts.push((out.len(), r, 0));
+                    out.push(w);
+                }
+            },
+            None => out.push(w),
+        }
+    }
+    for (at, _, more) in counts.into_iter().filter(|c| c.2 > 0) {
+        out[at].push_str(&format!(" (and {more} more meshes for the same reason)"));
+    }
+    out
 }
 
 impl Robot {
@@ -134,5 +160,31 @@ impl Robot {
                 }
             }
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::collapse_unresolved;
+
+    #[test]
+    fn meshes_not_drawn_for_one_reason_are_one_warning() {
+        let w = |s: &str| s.to_string();
+        let folded = collapse_unresolved(vec![
+            w("r.urdf:3: link \"a\" visual: mesh not drawn: package \"p\" not found"),
+            w("link \"a\": drawn from its <collision> elements"),
+            w("r.urdf:5: link \"b\" visual: mesh not drawn: package \"p\" not found"),
+            w("r.urdf:7: link \"c\" visual: mesh not drawn: package \"p\" not found"),
+            w("r.urdf:9: link \"d\" visual: mesh not drawn: x.stl: no such file"),
+        ]);
+        assert_eq!(
+            folded,
+            [
+                "r.urdf:3: link \"a\" visual: mesh not drawn: package \"p\" not found (and 2 \
+                 more meshes for the same reason)",
+                "link \"a\": drawn from its <collision> elements",
+                "r.urdf:9: link \"d\" visual: mesh not drawn: x.stl: no such file",
+            ]
+        );
     }
 }

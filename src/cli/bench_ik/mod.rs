@@ -72,7 +72,7 @@ struct Report {
 }
 
 /// The description file named by `--robot`.
-fn robot_file(name: &str) -> Result<PathBuf, String> {
+pub(crate) fn robot_file(name: &str) -> Result<PathBuf, String> {
     if let Some(path) = Robot::bundled(name) {
         return Ok(path);
     }

@@ -52,10 +52,21 @@ pub struct AppState {
 impl AppState {
     /// Loads everything `config` names; errors name the option or file at fault.
     pub fn load(config: &ViewConfig) -> Result<Self, ViewError> {
-        let robot = Robot::load(&config.robot)?;
-        let ssv = match &config.ssv {
-            Some(path) => Some(CollisionFile::open(path, &robot)?),
-            None => None,
+        let (robot, described) = match &config.robot {
+            RobotSource::Description { file, package_path } => {
+                let (robot, model) = crate::description::load(file, package_path)?;
+                (robot, model.map(|m| (m, file)))
+            }
+            other => (Robot::load(other)?, None),
+        };
+        let ssv = match (&config.ssv, described) {
+            (Some(path), _) => Some(CollisionFile::open(path, &robot)?),
+            (None, Some((model, file))) => {
+                let mut shown = CollisionFile::open(&model, &robot)?;
+                shown.read_only = Some(crate::description::read_only_reason(&model, file));
+                Some(shown)
+            }
+            (None, None) => None,
         };
         let recordings = match &config.recording {
             Some(path) => recording::open(path, &robot)?,
@@ -190,6 +201,7 @@ async fn put_ssv(State(s): State<Shared>, body: Bytes) -> Result<Json<Value>, Ap
         Err(e @ ViewError::Io(_)) => {
             Err(ApiError(StatusCode::INTERNAL_SERVER_ERROR, e.to_string()))
         }
+        Err(e @ ViewError::ReadOnly(_)) => Err(ApiError(StatusCode::FORBIDDEN, e.to_string())),
         Err(e) => Err(ApiError::invalid(e)),
     }
 }
@@ -207,12 +219,14 @@ async fn check_ssv(
     body: Bytes,
 ) -> Result<Json<Value>, ApiError> {
     let text = utf8(&body)?;
-    let path = {
+    let (path, read_only) = {
         let guard = s.ssv.lock().unwrap_or_else(PoisonError::into_inner);
-        guard.as_ref().ok_or_else(no_ssv)?.path.clone()
+        let file = guard.as_ref().ok_or_else(no_ssv)?;
+        (file.path.clone(), file.read_only.clone())
     };
     let mut candidate =
         CollisionFile::from_text(&path, text, &s.robot).map_err(ApiError::invalid)?;
+    candidate.read_only = read_only;
     let poses = s.poses(q.recording.as_deref(), q.frame)?;
     let pairs = candidate.distances(poses).map_err(ApiError::invalid)?;
     Ok(Json(json!({ "ssv": candidate.to_json(), "pairs": pairs })))
