@@ -5,21 +5,21 @@
 //! accelerations of Algorithm 2.4 against the fast path's.
 
 mod core_support;
+mod reference_support;
 // The random trees with loops; it loads `core_support` again for itself (its items are private).
 #[allow(clippy::duplicate_mod)]
 mod loop_support;
 
-use biped_dynamics::dynamics::reference::{self, kinds::fast_member_kinds, kinds::MemberKind};
+use biped_dynamics::dynamics::reference::kinds::{fast_member_kinds, MemberKind};
 use biped_dynamics::model::{FourBar, LinearCoupling, Mechanism};
 use biped_dynamics::urdf::{load_file, UrdfOptions};
-use biped_dynamics::{
-    dill::dill, forward_dynamics, Algorithm, Data, Force, JointModel, Model, RotorSpec, Wrench,
-};
-use core_support::{random_axis, random_model, random_q, random_vec, rel_diff, rng, TreeOptions};
+use biped_dynamics::{dill::dill, Force, JointModel, Model, RotorSpec, Wrench};
+use core_support::{random_axis, random_model, random_q, random_vec, rng, TreeOptions};
 use nalgebra::{DVector, Vector3};
 use proptest::prelude::*;
 use rand::rngs::StdRng;
 use rand::Rng;
+use reference_support::deviation;
 use std::collections::BTreeSet;
 
 /// Tolerance of every comparison (relative, max norm).
@@ -43,33 +43,6 @@ fn state(
         })
         .collect();
     (q, v, tau, fext)
-}
-
-/// Largest relative difference of the reference against O(n), CRBA and sparse LTL at one
-/// state, and of its body accelerations against those CRBA propagates.
-fn deviation(
-    model: &Model,
-    q: &DVector<f64>,
-    v: &DVector<f64>,
-    tau: &DVector<f64>,
-    fext: Option<&[Wrench]>,
-) -> f64 {
-    let reference::Solution { qddot: qdd, acc } =
-        reference::forward_dynamics_with_accelerations(model, q, v, tau, fext).expect("reference");
-    let mut data = Data::new(model);
-    let mut worst: f64 = 0.0;
-    for algo in [Algorithm::On, Algorithm::Sparse, Algorithm::Crba] {
-        let fast = forward_dynamics(model, &mut data, q, v, tau, fext, algo).expect("fast");
-        worst = worst.max(rel_diff(&qdd, fast));
-    }
-    for (i, a) in acc.iter().enumerate() {
-        if let Some(a) = a {
-            let fast = data.acc[i].to_vector();
-            let scale = a.amax().max(fast.amax()).max(1.0);
-            worst = worst.max((a - fast).amax() / scale);
-        }
-    }
-    worst
 }
 
 /// [`deviation`] at `n` random states, with and without external wrenches.
