@@ -2,6 +2,7 @@
 
 mod crba;
 pub mod on;
+pub mod reference;
 mod rnea;
 mod solve;
 
