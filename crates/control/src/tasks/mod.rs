@@ -11,6 +11,7 @@
 //! 31 rows for 31 DoF) and implements [`crate::ik::TaskMap`]. Targets are a
 //! [`LolaTargets`] struct.
 
+mod frames;
 mod lola;
 mod pose;
 mod retract;
@@ -20,6 +21,7 @@ mod stack;
 mod targets;
 pub mod task;
 
+pub use frames::WalkTaskFrames;
 pub use lola::LolaTasks;
 pub use pose::{lola_joint_cost, standing_configuration};
 pub use stack::{TaskHandle, TaskStack};

@@ -3,26 +3,25 @@
 //! (Alg. 4.3) with null-space gradient `grad H_J + grad H_C` (+ compensation) and the
 //! method's weight, and the SE(3) integration of q. Everything is preallocated in `new`.
 
-use super::error::{model_err, WalkError};
+use super::error::WalkError;
 use super::method::{Method, WalkParams};
-use super::posture::{
-    arm_lock_weight, arm_pivots, body, place_on_footprints, swing_on_circle, ArmPivot,
-};
+use super::posture::{arm_lock_weight, arm_pivots, place_on_footprints, swing_on_circle, ArmPivot};
+use super::robot::WalkRobot;
 use super::targets::{legs, set_targets};
 use crate::avoidance::{AvoidanceParams, AvoidanceSummary, CollisionAvoidance};
-use crate::ik::joint_cost::JointCost;
+use crate::ik::joint_cost::{JointCost, JointCostEntry};
 use crate::ik::{
     JointLimits, JointRange, RmrcProblem, SaturatedRmrc, SaturationReport, TaskBuffers, TaskMap,
     Weight,
 };
 use crate::momentum::{
     vertical_inertia, ArmSwing, ArmSwingNominal, ArmTargets, Compensation, CompensationLaw,
-    MomentumMinimisation, MomentumReference, VerticalMomentum, LOLA_ARMS,
+    MomentumMinimisation, MomentumReference, VerticalMomentum,
 };
 use crate::pattern::{FootGeometry, PatternSample, WalkingPattern};
-use crate::tasks::{lola_joint_cost, LolaTasks, TaskId};
+use crate::tasks::{LolaTasks, TaskId};
 use biped_dynamics::{Data, Jacobians};
-use biped_robots::lola::{lola_collision_model, LolaModel};
+use biped_robots::lola::LolaModel;
 use nalgebra::{DVector, Vector3};
 
 mod compensate;
@@ -40,7 +39,8 @@ pub struct CycleInfo {
     pub limits: SaturationReport,
 }
 
-/// Lola's walking IK with one arm method (see [`Method`]).
+/// The walking IK of a [`WalkRobot`] (Lola by [`Self::new`]) with one arm method (see
+/// [`Method`]).
 ///
 /// # Example
 ///
@@ -87,6 +87,7 @@ pub struct WalkController {
     buf: TaskBuffers,
     sns: SaturatedRmrc,
     foot: FootGeometry,
+    toes: bool,
     xcmd: DVector<f64>,
     grad: DVector<f64>,
     grad_c: DVector<f64>,
@@ -121,16 +122,27 @@ impl WalkController {
         params: WalkParams,
         pattern: &WalkingPattern,
     ) -> Result<Self, WalkError> {
+        Self::for_robot(&WalkRobot::lola(lola)?, method, params, pattern)
+    }
+
+    /// Controller for `robot` standing on the first footprints of `pattern`, after
+    /// `params.settle_time` of IK cycles on its first sample.
+    pub fn for_robot(
+        robot: &WalkRobot,
+        method: Method,
+        params: WalkParams,
+        pattern: &WalkingPattern,
+    ) -> Result<Self, WalkError> {
         let dt = pattern.params().dt;
         params.validate(dt)?;
         let first = pattern.sample(0).ok_or(WalkError::InvalidParameter {
             name: "pattern",
             reason: "has no samples".into(),
         })?;
-        let model = &lola.model;
+        let model = &robot.model;
         let nv = model.nv();
-        let mut tasks = LolaTasks::new(lola, 0.2)?;
-        let q = place_on_footprints(lola, &mut tasks, first, params.arm_pose)?;
+        let mut tasks = LolaTasks::with_frames(model, &robot.frames, 0.2)?;
+        let q = place_on_footprints(robot, &mut tasks, first, params.arm_pose)?;
         tasks.set_targets_from(&q)?;
         let com_offset = tasks.targets.cog - first.com;
         let arm_on = method.arm_tasks();
@@ -144,18 +156,17 @@ impl WalkController {
             right_leg,
         };
         let swing = ArmSwing::with_mask(params.arm_swing_scale, Vector3::x(), nominal)?;
-        let cost = lola_joint_cost(
-            lola,
+        let cost = joint_cost(
+            robot,
             &q,
             params.comfort_weight,
             params.limit_weight,
             params.limit_margin,
         )?;
         let avoid = if params.avoidance {
-            let segments = lola_collision_model(lola).map_err(model_err)?.model;
             Some(CollisionAvoidance::new(
                 model,
-                segments,
+                robot.collision.clone(),
                 AvoidanceParams::default(),
             )?)
         } else {
@@ -164,13 +175,14 @@ impl WalkController {
         let minim = MomentumMinimisation::new(params.minimization_delta)?;
         let weight = match method {
             Method::Minimization => minim.weight(nv)?,
-            Method::None => arm_lock_weight(lola, params.arm_lock_weight)?,
+            Method::None => arm_lock_weight(robot, params.arm_lock_weight)?,
             _ => Weight::Identity,
         };
         // only the reducing set is used (see `compensate`)
-        let comp = Compensation::new(model, &LOLA_ARMS, CompensationLaw::Exact)?;
+        let reducing: Vec<&str> = robot.reducing.iter().map(String::as_str).collect();
+        let comp = Compensation::new(model, &reducing, CompensationLaw::Exact)?;
         let izz = vertical_inertia(model, &mut Data::new(model), &q)?;
-        let shoulders = [body(lola, "r_shoulder")?, body(lola, "l_shoulder")?];
+        let shoulders = robot.frames.arm_roots;
         let arm_pivot = arm_pivots(&tasks, &shoulders);
         let mut ctrl = Self {
             arm_pivot,
@@ -178,8 +190,9 @@ impl WalkController {
             method,
             params,
             buf: TaskBuffers::new(&tasks),
-            sns: SaturatedRmrc::new(TaskId::TOTAL_ROWS, nv, joint_limits(lola, &params)?)?,
+            sns: SaturatedRmrc::new(TaskId::TOTAL_ROWS, nv, joint_limits(robot, &params)?)?,
             foot: pattern.params().foot,
+            toes: robot.frames.toes.is_some(),
             xcmd: DVector::zeros(TaskId::TOTAL_ROWS),
             grad: DVector::zeros(nv),
             grad_c: DVector::zeros(nv),
@@ -272,7 +285,13 @@ impl WalkController {
             self.reference.start_step(s.t, t_step, turn)?;
         }
         let t = &mut self.tasks.targets;
-        set_targets(s, &self.com_offset, &self.foot, arms.as_ref(), t);
+        set_targets(
+            s,
+            &self.com_offset,
+            (&self.foot, self.toes),
+            arms.as_ref(),
+            t,
+        );
         Ok(())
     }
 
@@ -347,10 +366,10 @@ impl WalkController {
     }
 }
 
-/// Hard limits of every actuated joint of `lola` with the settings of `params`.
-fn joint_limits(lola: &LolaModel, params: &WalkParams) -> Result<JointLimits, WalkError> {
-    let ranges = lola
-        .limits
+/// Hard limits of every ranged joint of `robot` with the settings of `params`.
+fn joint_limits(robot: &WalkRobot, params: &WalkParams) -> Result<JointLimits, WalkError> {
+    let ranges = robot
+        .joints
         .iter()
         .map(|l| JointRange {
             q_index: l.q_index,
@@ -360,4 +379,27 @@ fn joint_limits(lola: &LolaModel, params: &WalkParams) -> Result<JointLimits, Wa
         })
         .collect();
     Ok(JointLimits::new(ranges, params.limits)?)
+}
+
+/// `H_J` over the ranged joints of `robot` with comfort pose `comfort` (a configuration).
+fn joint_cost(
+    robot: &WalkRobot,
+    comfort: &DVector<f64>,
+    w_comfort: f64,
+    w_limit: f64,
+    margin: f64,
+) -> Result<JointCost, WalkError> {
+    let entries = robot
+        .joints
+        .iter()
+        .map(|l| JointCostEntry {
+            q_index: l.q_index,
+            v_index: l.v_index,
+            lower: l.lower,
+            upper: l.upper,
+            comfort: comfort[l.q_index],
+            w_comfort,
+        })
+        .collect();
+    Ok(JointCost::new(entries, w_limit, margin)?)
 }
