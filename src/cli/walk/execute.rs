@@ -4,7 +4,7 @@
 
 use super::outdir::{self, OutputDir, Status};
 use super::{interrupt, report, robot, tables, WalkArgs};
-use biped_control::pattern::WalkingPattern;
+use biped_control::pattern::{PatternParams, WalkingPattern};
 use biped_control::walk::{
     run_dynamic_walk, run_walk_robot, DynamicWalkParams, DynamicWalkRun, DynamicWalkSummary,
     Method, WalkParams, WalkRobot, WalkRun,
@@ -87,6 +87,7 @@ pub fn execute(args: &WalkArgs, write: bool) -> Result<Walk, String> {
     };
     let dir = out.as_ref().map(|o| o.path());
     let mut summary = Map::new();
+    summary.insert("robot".into(), robot_entry(&robot, &params));
     let mut tables = Vec::new();
     let walked = walk_all(
         args,
@@ -132,6 +133,19 @@ pub fn execute(args: &WalkArgs, write: bool) -> Result<Walk, String> {
         summary,
         lines,
         tables,
+    })
+}
+
+/// The `"robot"` entry of `summary.json`: the walked robot and the pattern geometry it walked
+/// with.
+fn robot_entry(robot: &WalkRobot, p: &PatternParams) -> Value {
+    serde_json::json!({
+        "name": robot.name,
+        "dof": robot.model.nv(),
+        "step_length": p.step_length,
+        "step_width": p.step_width,
+        "com_height": p.com_height,
+        "reach": p.reach,
     })
 }
 

@@ -5,7 +5,8 @@
 //!   [`crate::pattern::FootGeometry`] (front / back edge from the origin, half width).
 //! - Upper body: the body the arms are mounted on (the parent of the first arm joint's body).
 //! - Joint tasks hold every movable joint outside the legs and arms (waist, head) at its
-//!   posture value, at most five of them ([`super::HELD_SLOTS`]); toe joints, where the
+//!   posture value, at most five of them ([`super::HELD_SLOTS`]); joints beyond an arm group
+//!   on the arm's subtree (hands, grippers) move with the arm; toe joints, where the
 //!   description names them, are held too and the feet stay flat (no toe-off).
 //! - Walking posture: the description's comfort pose; pattern geometry from it
 //!   ([`super::geometry`]).
@@ -14,7 +15,7 @@ use super::geometry::{derive, Derived};
 use super::{WalkJoint, WalkRobot, HELD_SLOTS};
 use crate::pattern::{FootGeometry, FootRoll};
 use crate::tasks::{Frame, WalkTaskFrames};
-use crate::walk::error::{model_err, WalkError};
+use crate::walk::error::WalkError;
 use biped_dynamics::urdf::UrdfModel;
 use biped_robots::description::{Foot, Robot};
 use nalgebra::{Isometry3, Translation3};
@@ -29,7 +30,7 @@ impl WalkRobot {
         let model = urdf.model.clone();
         let joints = ranged_joints(robot);
         let collision = robot.collision.as_ref().ok_or_else(|| {
-            model_err(format!(
+            WalkError::Description(format!(
                 "{file}: no [collision] model: the walk's self-collision avoidance needs one \
                  (`biped ssv fit` makes one)"
             ))
@@ -47,10 +48,12 @@ impl WalkRobot {
             .model
             .body(arm_roots[1])
             .and_then(|b| b.parent())
-            .ok_or_else(|| model_err(format!("{file}: the left arm has no parent body")))?;
-        let held = held_joints(robot);
+            .ok_or_else(|| {
+                WalkError::Description(format!("{file}: the left arm has no parent body"))
+            })?;
+        let (held, hands) = held_joints(robot, &arm_roots);
         if held.len() > HELD_SLOTS.len() {
-            return Err(model_err(format!(
+            return Err(WalkError::Description(format!(
                 "{file}: {} joints outside the legs and arms ({}): the walk holds at most {}",
                 held.len(),
                 held.join(", "),
@@ -61,7 +64,8 @@ impl WalkRobot {
         for (name, &slot) in held.iter().zip(HELD_SLOTS.iter()) {
             slots[slot] = robot.joint_index(name);
         }
-        let arm_joints: Vec<String> = d.arms.iter().flatten().cloned().collect();
+        let mut arm_joints: Vec<String> = d.arms.iter().flatten().cloned().collect();
+        arm_joints.extend(hands);
         let mut recorded = arm_joints.clone();
         recorded.extend(held.iter().cloned());
         let foot = foot_geometry(&d.feet[0]);
@@ -119,20 +123,35 @@ fn ranged_joints(robot: &Robot) -> Vec<WalkJoint> {
         .collect()
 }
 
-/// Movable joints in neither a leg nor an arm group (toe joints included), in URDF order.
-fn held_joints(robot: &Robot) -> Vec<String> {
+/// Movable joints in neither a leg nor an arm group, in URDF order (toe joints last): those
+/// on the trunk and head (held by joint tasks), and those on an arm's subtree beyond its group
+/// (hands, grippers: moved with the arm).
+fn held_joints(robot: &Robot, arm_roots: &[usize; 2]) -> (Vec<String>, Vec<String>) {
     let d = &robot.description;
+    let model = &robot.urdf.model;
     let grouped = |n: &String| d.legs.iter().chain(&d.arms).any(|g| g.contains(n));
     let toe = |n: &String| d.feet.iter().any(|f| f.toe_joint.as_ref() == Some(n));
-    let mut held: Vec<String> = robot
-        .urdf
-        .joints
-        .iter()
-        .map(|j| j.name.clone())
-        .filter(|n| !grouped(n) && !toe(n))
-        .collect();
+    let on_arm = |mut b: usize| loop {
+        if arm_roots.contains(&b) {
+            return true;
+        }
+        match model.body(b).and_then(|x| x.parent()) {
+            Some(p) => b = p,
+            None => return false,
+        }
+    };
+    let (mut held, mut hands) = (Vec::new(), Vec::new());
+    for j in &robot.urdf.joints {
+        if grouped(&j.name) || toe(&j.name) {
+            continue;
+        }
+        match on_arm(j.body) {
+            true => hands.push(j.name.clone()),
+            false => held.push(j.name.clone()),
+        }
+    }
     held.extend(d.feet.iter().filter_map(|f| f.toe_joint.clone()));
-    held
+    (held, hands)
 }
 
 /// Body moved by the first joint of `group`.
@@ -140,11 +159,11 @@ fn first_body(robot: &Robot, group: &[String]) -> Result<usize, WalkError> {
     let file = &robot.description.file;
     let name = group
         .first()
-        .ok_or_else(|| model_err(format!("{file}: an arm group is empty")))?;
+        .ok_or_else(|| WalkError::Description(format!("{file}: an arm group is empty")))?;
     robot
         .joint(name)
         .map(|j| j.body)
-        .ok_or_else(|| model_err(format!("{file}: `{name}` is not a movable joint")))
+        .ok_or_else(|| WalkError::Description(format!("{file}: `{name}` is not a movable joint")))
 }
 
 /// The sole frame of `foot`: its link frame moved along its z axis to the sole plane.
@@ -155,7 +174,7 @@ fn sole_frame(urdf: &UrdfModel, foot: &Foot, file: &str) -> Result<Frame, WalkEr
         None => (None, Isometry3::identity()),
     };
     let body = body.ok_or_else(|| {
-        model_err(format!(
+        WalkError::Description(format!(
             "{file}: foot frame `{}` is not on a moving body",
             foot.frame
         ))

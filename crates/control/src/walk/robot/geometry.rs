@@ -53,7 +53,9 @@ pub(super) fn derive(
         first.and_then(|n| robot.joint(n)).map(|j| j.body)
     });
     let [Some(hr), Some(hl)] = hips else {
-        return Err(model_err(format!("{file}: a leg group is empty")));
+        return Err(WalkError::Description(format!(
+            "{file}: a leg group is empty"
+        )));
     };
     let height = 0.5 * ((data.world_pos[hr] - feet[0]).z + (data.world_pos[hl] - feet[1]).z);
     update_placements(model, &mut data, &model.neutral()).map_err(model_err)?;

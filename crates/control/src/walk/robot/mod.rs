@@ -117,7 +117,7 @@ impl WalkRobot {
         let mut recorded = names(&LOLA_ARMS);
         recorded.extend(names(&LOLA_RECORDED));
         Ok(Self {
-            name: "the Lola-like biped (Type 2)".into(),
+            name: "lola".into(),
             frames: WalkTaskFrames::lola(lola)?,
             arm_joints: names(&LOLA_ARMS),
             arm_pose_joints,
