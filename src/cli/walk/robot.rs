@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 pub struct Chosen {
     /// The robot.
     pub robot: WalkRobot,
-    /// `the Lola-like biped (Type 2, 31 DoF)`, `g1 (FILE, 35 DoF)`.
+    /// `the Lola-like biped (Type 2, 31 DoF)`, `g1 (bundled g1.toml, 35 DoF)`.
     pub label: String,
     /// True for the Lola-like biped (the only robot of `--dynamic` so far).
     pub lola: bool,
@@ -31,12 +31,11 @@ pub fn choose(robot: Option<&str>) -> Result<Chosen, String> {
     let path = description_path(value)?;
     let loaded = Robot::load(&path).map_err(|e| format!("--robot: {e}"))?;
     let robot = WalkRobot::from_description(&loaded).map_err(|e| format!("--robot: {e}"))?;
-    let label = format!(
-        "{} ({}, {} DoF)",
-        robot.name,
-        path.display(),
-        robot.model.nv()
-    );
+    let file = match Robot::bundled(value) {
+        Some(_) => format!("bundled {value}.toml"),
+        None => path.display().to_string(),
+    };
+    let label = format!("{} ({file}, {} DoF)", robot.name, robot.model.nv());
     Ok(Chosen {
         robot,
         label,

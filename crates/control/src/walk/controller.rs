@@ -1,7 +1,9 @@
-//! [`WalkController`]: one 1 kHz IK cycle of Lola over a walking-pattern sample (thesis 4.5,
+//! [`WalkController`]: one 1 kHz IK cycle of a [`WalkRobot`] (Lola, or a described robot)
+//! over a walking-pattern sample (thesis 4.5,
 //! 5.2, 7.3-7.5): targets, closed-loop task velocities (4.13)-(4.16), Klein-Huang RMRC
 //! (Alg. 4.3) with null-space gradient `grad H_J + grad H_C` (+ compensation) and the
-//! method's weight, and the SE(3) integration of q. Everything is preallocated in `new`.
+//! method's weight, and the SE(3) integration of q. Everything is preallocated in
+//! [`WalkController::for_robot`].
 
 use super::error::WalkError;
 use super::method::{Method, WalkParams};
@@ -9,22 +11,22 @@ use super::posture::{arm_lock_weight, arm_pivots, place_on_footprints, swing_on_
 use super::robot::WalkRobot;
 use super::targets::{legs, set_targets};
 use crate::avoidance::{AvoidanceParams, AvoidanceSummary, CollisionAvoidance};
-use crate::ik::joint_cost::{JointCost, JointCostEntry};
-use crate::ik::{
-    JointLimits, JointRange, RmrcProblem, SaturatedRmrc, SaturationReport, TaskBuffers, TaskMap,
-    Weight,
-};
+use crate::ik::joint_cost::JointCost;
+use crate::ik::{RmrcProblem, SaturatedRmrc, SaturationReport, TaskBuffers, TaskMap, Weight};
 use crate::momentum::{
     vertical_inertia, ArmSwing, ArmSwingNominal, ArmTargets, Compensation, CompensationLaw,
     MomentumMinimisation, MomentumReference, VerticalMomentum,
 };
 use crate::pattern::{FootGeometry, PatternSample, WalkingPattern};
 use crate::tasks::{LolaTasks, TaskId};
-use biped_dynamics::{Data, Jacobians};
+use biped_dynamics::Data;
 use biped_robots::lola::LolaModel;
+use joints::{joint_cost, joint_limits};
 use nalgebra::{DVector, Vector3};
 
+mod access;
 mod compensate;
+mod joints;
 
 /// What one cycle did.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -324,82 +326,4 @@ impl WalkController {
         };
         Ok(self.sns.solve(&p, &self.q, dt, &mut self.qdot)?)
     }
-
-    /// The method.
-    pub fn method(&self) -> Method {
-        self.method
-    }
-
-    /// Configuration for the next cycle.
-    pub fn q(&self) -> &DVector<f64> {
-        &self.q
-    }
-
-    /// Configuration at which the last cycle evaluated tasks and momentum.
-    pub fn q_eval(&self) -> &DVector<f64> {
-        &self.q_eval
-    }
-
-    /// Joint velocities of the last cycle (at [`Self::q_eval`]).
-    pub fn qdot(&self) -> &DVector<f64> {
-        &self.qdot
-    }
-
-    /// `J_Lz^T` at [`Self::q_eval`] (7.2).
-    pub fn jlz(&self) -> &DVector<f64> {
-        self.vm.jacobian_z()
-    }
-
-    /// The limit-keeping solver (its box and fixed joints of the last cycle).
-    pub fn limiter(&self) -> &SaturatedRmrc {
-        &self.sns
-    }
-
-    /// The task set (targets, activations, model).
-    pub fn tasks(&self) -> &LolaTasks {
-        &self.tasks
-    }
-
-    /// Kinematics at [`Self::q_eval`].
-    pub fn kinematics(&self) -> (&Data, &Jacobians) {
-        self.tasks.kinematics()
-    }
-}
-
-/// Hard limits of every ranged joint of `robot` with the settings of `params`.
-fn joint_limits(robot: &WalkRobot, params: &WalkParams) -> Result<JointLimits, WalkError> {
-    let ranges = robot
-        .joints
-        .iter()
-        .map(|l| JointRange {
-            q_index: l.q_index,
-            v_index: l.v_index,
-            lower: l.lower,
-            upper: l.upper,
-        })
-        .collect();
-    Ok(JointLimits::new(ranges, params.limits)?)
-}
-
-/// `H_J` over the ranged joints of `robot` with comfort pose `comfort` (a configuration).
-fn joint_cost(
-    robot: &WalkRobot,
-    comfort: &DVector<f64>,
-    w_comfort: f64,
-    w_limit: f64,
-    margin: f64,
-) -> Result<JointCost, WalkError> {
-    let entries = robot
-        .joints
-        .iter()
-        .map(|l| JointCostEntry {
-            q_index: l.q_index,
-            v_index: l.v_index,
-            lower: l.lower,
-            upper: l.upper,
-            comfort: comfort[l.q_index],
-            w_comfort,
-        })
-        .collect();
-    Ok(JointCost::new(entries, w_limit, margin)?)
 }
