@@ -1,8 +1,11 @@
 //! `biped walk --robot`: the bundled G1 walks a few steps with every arm method; the outputs and
 //! verdicts are those of the Lola walk, and a replay of the trajectory's q through the G1's
 //! forward kinematics confirms the feet (planned sole frames, no sliding of a stance foot,
-//! the footsteps' advance), the CoM and the joint ranges. Bad robots fail with one line.
+//! the footsteps' advance), the CoM (the model's, and the pattern's LIPM CoM regenerated from
+//! the robot) and the joint ranges. Bad robots fail with one line.
 
+use biped_control::pattern::WalkingPattern;
+use biped_control::walk::WalkRobot;
 use biped_dynamics::{center_of_mass, Data};
 use biped_robots::description::Robot;
 use nalgebra::{DVector, Vector3};
@@ -102,11 +105,20 @@ fn replay(path: &Path, method: &str) {
     let bodies = feet.each_ref().map(|f| model.body_id(&f.frame).unwrap());
     let sole_cols = ["l_sole", "r_sole"].map(|s| column(&head, &format!("{s}.x")));
     let com_col = column(&head, "com.x");
+    let step = summary_step(path);
+    let robot = WalkRobot::from_description(&g1).unwrap();
+    let pattern = WalkingPattern::generate(&robot.pattern_params(STEPS, step, 0.8)).unwrap();
+    assert_eq!(
+        pattern.len(),
+        rows.len(),
+        "{method}: one row per pattern sample"
+    );
+    let mut com_offset: Option<Vector3<f64>> = None;
     let mut data = Data::new(model);
     let mut contact: [Vec<Vector3<f64>>; 2] = Default::default();
     let mut first = None;
     let mut last = [Vector3::zeros(); 2];
-    for row in &rows {
+    for (k, row) in rows.iter().enumerate() {
         let q = DVector::from_iterator(names.len(), q_cols.iter().map(|&c| row[c]));
         for j in &g1.urdf.joints {
             let [lo, hi] = j.range.unwrap();
@@ -149,7 +161,6 @@ fn replay(path: &Path, method: &str) {
     }
     contact.iter().for_each(|c| check_contact(c, method));
     let first = first.unwrap();
-    let step = summary_step(path);
     for s in 0..2 {
         let moved = last[s] - first[s];
         let planned = (STEPS - 1) as f64 * step;
