@@ -136,6 +136,14 @@ fn replay(path: &Path, method: &str) {
             (com - planned).norm() < 1e-9,
             "{method}: CoM {com} vs {planned}"
         );
+        // the CoM follows the pattern's LIPM CoM (shifted by the start pose's offset)
+        let lipm = pattern.sample(k).unwrap().com;
+        let offset = *com_offset.get_or_insert(com - lipm);
+        let off = (com - lipm - offset).norm();
+        assert!(
+            off < 5e-3,
+            "{method}: CoM {off} m off the pattern at row {k}"
+        );
         for s in 0..2 {
             let b = bodies[s];
             let down = Vector3::new(0.0, 0.0, feet[s].sole_center.z);
