@@ -26,6 +26,11 @@ impl WalkRobot {
     pub fn from_description(robot: &Robot) -> Result<Self, WalkError> {
         let d = &robot.description;
         let file = &d.file;
+        if !d.floating {
+            return Err(WalkError::Description(format!(
+                "{file}: `floating = false`: a walking robot needs a floating base"
+            )));
+        }
         let urdf = &robot.urdf;
         let model = urdf.model.clone();
         let joints = ranged_joints(robot);
