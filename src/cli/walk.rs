@@ -25,7 +25,7 @@ pub struct WalkArgs {
     steps: usize,
     /// Robot: `g1`, `talos` (bundled descriptions) or a robot description file
     /// (docs/robot_description.md); default: the Lola-like biped.
-    #[arg(long, value_name = "ROBOT")]
+    #[arg(long, value_name = "NAME")]
     robot: Option<String>,
     /// Step length in m (footprint ahead of the previous one; -0.6 to 0.6, negative:
     /// backwards; default 0.4 for the Lola-like biped, a described robot's natural step
