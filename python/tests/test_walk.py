@@ -61,3 +61,14 @@ def test_walk_batch_equals_walk():
         for stem in tables:
             for k in tables[stem]:
                 np.testing.assert_array_equal(got[1][stem][k], tables[stem][k], err_msg=f"{stem}: {k}")
+
+
+def test_walk_robot_g1():
+    summary, tables = biped.walk(robot="g1", steps=2, method="minimization")
+    assert summary["robot"]["name"] == "g1" and summary["robot"]["dof"] == 35
+    assert summary["violations"] == []
+    assert summary["minimization"]["min_distance"] > 0 and summary["minimization"]["min_joint_margin"] >= 0
+    assert set(tables) == {"minimization", "minimization_trajectory", "minimization_recording"}
+    assert "q[left_knee_joint]" in tables["minimization_trajectory"]
+    with pytest.raises(biped.BipedError, match="--robot"):
+        biped.walk(robot="nosuch")

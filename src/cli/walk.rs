@@ -1,4 +1,5 @@
-//! `biped walk`: Lola's whole-body IK over a walking pattern with the arm methods of thesis
+//! `biped walk`: the whole-body IK of the Lola-like biped (or of a described robot,
+//! `--robot`) over a walking pattern with the arm methods of thesis
 //! ch. 7; writes per-method CSV, SVG plots in the style of Fig. 7.1/7.4 and `summary.json`.
 //! With `--dynamic` the walk of one method (`--method`, default minimisation) is then tracked
 //! in the contact simulation: `dynamic.csv`, plots and a `"dynamic"` summary entry.
@@ -10,6 +11,7 @@ use std::path::PathBuf;
 
 mod execute;
 mod report;
+mod robot;
 pub mod tables;
 
 pub use execute::{execute, parse_args, Walk};
@@ -21,10 +23,16 @@ pub struct WalkArgs {
     #[arg(long, value_name = "N", default_value_t = 10, allow_hyphen_values = true,
           value_parser = |s: &str| range::walk::STEPS.parse_whole(s).map(|n| n as usize))]
     steps: usize,
-    /// Step length in m (footprint ahead of the previous one; -0.6 to 0.6, negative: backwards).
-    #[arg(long, value_name = "M", default_value_t = 0.4, allow_hyphen_values = true,
+    /// Robot: `g1`, `talos` (bundled descriptions) or a robot description file
+    /// (docs/robot_description.md); default: the Lola-like biped.
+    #[arg(long, value_name = "NAME")]
+    robot: Option<String>,
+    /// Step length in m (footprint ahead of the previous one; -0.6 to 0.6, negative:
+    /// backwards; default 0.4 for the Lola-like biped, a described robot's natural step
+    /// length from its leg geometry).
+    #[arg(long, value_name = "M", allow_hyphen_values = true,
           value_parser = |s: &str| range::walk::STEP_LENGTH.parse(s))]
-    step_length: f64,
+    step_length: Option<f64>,
     /// Step time in s (0.2 to 5).
     #[arg(long, value_name = "S", default_value_t = 0.8, allow_hyphen_values = true,
           value_parser = |s: &str| range::walk::STEP_TIME.parse(s))]
@@ -65,7 +73,7 @@ pub struct WalkArgs {
 pub fn run(args: WalkArgs) -> CliResult {
     let walk = execute(&args, true)?;
     let target = args.target();
-    report::print(&args, &walk.lola, &walk.runs, walk.dynamic.as_ref())?;
+    report::print(&args, &walk, walk.dynamic.as_ref())?;
     outln!("wrote {}", target.display())?;
     if let Some(line) = walk.failure() {
         return Err(line.into());

@@ -3,13 +3,12 @@
 //! summary, the verdicts and the tables of the CSV files.
 
 use super::outdir::{self, OutputDir, Status};
-use super::{interrupt, report, tables, WalkArgs};
-use biped_control::pattern::WalkingPattern;
+use super::{interrupt, report, robot, tables, WalkArgs};
+use biped_control::pattern::{PatternParams, WalkingPattern};
 use biped_control::walk::{
-    run_dynamic_walk, run_walk, walk_pattern_params, DynamicWalkParams, DynamicWalkRun,
-    DynamicWalkSummary, Method, WalkParams, WalkRun,
+    run_dynamic_walk, run_walk_robot, DynamicWalkParams, DynamicWalkRun, DynamicWalkSummary,
+    Method, WalkParams, WalkRobot, WalkRun,
 };
-use biped_robots::lola::{self, LolaModel, LolaType};
 use biped_sim::record::replay::write_csv_gz;
 use biped_sim::Recorder;
 use serde_json::{Map, Value};
@@ -18,8 +17,12 @@ use std::path::Path;
 /// A finished `biped walk`: the model, every method's walk, the dynamic walk if asked for, the
 /// summary of `summary.json`, the violation lines and the tables of the CSV files.
 pub struct Walk {
-    /// The walked model.
-    pub lola: LolaModel,
+    /// The walked robot.
+    pub robot: WalkRobot,
+    /// What the report calls it (`the Lola-like biped (Type 2, 31 DoF)`).
+    pub label: String,
+    /// The step length walked \[m].
+    pub step_length: f64,
     /// The kinematic walk of each method.
     pub runs: Vec<WalkRun>,
     /// The dynamic walk and the method it tracked.
@@ -66,20 +69,29 @@ pub fn execute(args: &WalkArgs, write: bool) -> Result<Walk, String> {
         "all" => Method::ALL.to_vec(),
         m => vec![m.parse().map_err(|e| format!("--method: {e}"))?],
     };
-    let lola = lola::build(LolaType::Type2).map_err(|e| e.to_string())?;
-    let params = walk_pattern_params(&lola, args.steps, args.step_length, args.step_time)
-        .map_err(|e| e.to_string())?;
-    let pattern = WalkingPattern::generate(&params).map_err(|e| e.to_string())?;
+    let chosen = robot::choose(args.robot.as_deref())?;
+    if args.dynamic && !chosen.lola {
+        return Err(format!(
+            "--dynamic: the dynamic walk of described robots is not available yet (--robot {}); \
+             walk it kinematically without --dynamic",
+            args.robot.as_deref().unwrap_or("")
+        ));
+    }
+    let robot = chosen.robot;
+    let step_length = args.step_length.unwrap_or(robot.natural_step_length);
+    let params = robot.pattern_params(args.steps, step_length, args.step_time);
+    let pattern = WalkingPattern::generate(&params).map_err(|e| format!("walking pattern: {e}"))?;
     let out = match write || args.out.is_some() {
         true => Some(OutputDir::create(&args.target(), "--out").map_err(|e| e.to_string())?),
         false => None,
     };
     let dir = out.as_ref().map(|o| o.path());
     let mut summary = Map::new();
+    summary.insert("robot".into(), robot_entry(&robot, &params));
     let mut tables = Vec::new();
     let walked = walk_all(
         args,
-        &lola,
+        &robot,
         &pattern,
         &methods,
         dir,
@@ -113,12 +125,27 @@ pub fn execute(args: &WalkArgs, write: bool) -> Result<Walk, String> {
         out.commit().map_err(|e| e.to_string())?;
     }
     Ok(Walk {
-        lola,
+        robot,
+        label: chosen.label,
+        step_length,
         runs,
         dynamic,
         summary,
         lines,
         tables,
+    })
+}
+
+/// The `"robot"` entry of `summary.json`: the walked robot and the pattern geometry it walked
+/// with.
+fn robot_entry(robot: &WalkRobot, p: &PatternParams) -> Value {
+    serde_json::json!({
+        "name": robot.name,
+        "dof": robot.model.nv(),
+        "step_length": p.step_length,
+        "step_width": p.step_width,
+        "com_height": p.com_height,
+        "reach": p.reach,
     })
 }
 
@@ -137,7 +164,7 @@ type Walks = (Vec<WalkRun>, Option<(Method, DynamicWalkRun)>);
 /// part's summary to `summary` as it finishes.
 fn walk_all(
     args: &WalkArgs,
-    lola: &LolaModel,
+    robot: &WalkRobot,
     pattern: &WalkingPattern,
     methods: &[Method],
     dir: Option<&Path>,
@@ -156,7 +183,7 @@ fn walk_all(
             friction: args.friction,
             ..WalkParams::default()
         };
-        let run = run_walk(lola, pattern, m, params)?;
+        let run = run_walk_robot(robot, pattern, m, params)?;
         keep(tables, dir, format!("{m}"), tables::series_table(&run)?)?;
         keep(
             tables,
@@ -164,7 +191,7 @@ fn walk_all(
             format!("{m}_trajectory"),
             tables::trajectory_table(&run)?,
         )?;
-        let recording = tables::recording_table(&run, &lola.model)?;
+        let recording = tables::recording_table(&run, &robot.model)?;
         keep_recording(tables, dir, format!("{m}_recording"), recording)?;
         summary.insert(m.name().to_string(), serde_json::to_value(&run.summary)?);
         runs.push(run);
@@ -181,7 +208,7 @@ fn walk_all(
         [m] => *m,
         _ => Method::Minimization,
     };
-    let run = dynamic_walk(args, method)?;
+    let run = dynamic_walk(args, method, pattern.params().step_length)?;
     let table = tables::dynamic_table(&run)?;
     if let Some(dir) = dir {
         tables::dynamic_plots(&table, dir)?;
@@ -248,10 +275,11 @@ fn keep_recording(
 fn dynamic_walk(
     args: &WalkArgs,
     method: Method,
+    step_length: f64,
 ) -> Result<DynamicWalkRun, Box<dyn std::error::Error>> {
     let p = DynamicWalkParams {
         steps: args.steps,
-        step_length: args.step_length,
+        step_length,
         step_time: args.step_time,
         method,
         end_stops: !args.no_end_stops,

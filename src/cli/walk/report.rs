@@ -1,13 +1,13 @@
 //! What `biped walk` prints: what was walked, one block per arm method (what the method does,
 //! then its numbers), the verdicts on joint limits and self-collision, and the dynamic walk.
 
+use super::Walk;
 use super::WalkArgs;
 use crate::cli::out::{self, errln, outln};
 use crate::cli::CliResult;
 use biped_control::walk::{
     DynamicWalkRun, DynamicWalkSummary, Method, Verdict, WalkRun, WalkVerdicts,
 };
-use biped_robots::lola::LolaModel;
 use std::io::{self, IsTerminal};
 use std::process::ExitCode;
 
@@ -22,15 +22,15 @@ pub fn progress(text: &str) {
 /// Prints the report of a finished walk.
 pub fn print(
     args: &WalkArgs,
-    lola: &LolaModel,
-    runs: &[WalkRun],
+    walk: &Walk,
     dynamic: Option<&(Method, DynamicWalkRun)>,
 ) -> io::Result<()> {
+    let runs = &walk.runs;
     outln!(
-        "walked the Lola-like biped (Type 2, {} DoF) with the whole-body IK at 1 kHz: {} steps of {:.2} m, {:.2} s per step",
-        lola.model.nv(),
+        "walked {} with the whole-body IK at 1 kHz: {} steps of {:.2} m, {:.2} s per step",
+        walk.label,
         args.steps,
-        args.step_length,
+        walk.step_length,
         args.step_time
     )?;
     for r in runs {

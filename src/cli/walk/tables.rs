@@ -2,7 +2,6 @@
 //! full trajectory, the dynamic walk's signals, the recordings for replay (docs/recording.md)
 //! and the plots drawn from them.
 
-use biped_control::walk::run::RECORDED_JOINTS;
 use biped_control::walk::{DynamicWalkRun, DynamicWalkSeries, WalkRun, WalkSeries};
 use biped_dynamics::Model;
 use biped_sim::record::replay::{frame_rows, replay, FRAME_RATE};
@@ -136,8 +135,8 @@ pub fn series_table(run: &WalkRun) -> Result<Recorder, RecordError> {
         }
         rec.set("zmp_x", s.zmp[k][0])?;
         rec.set("zmp_y", s.zmp[k][1])?;
-        for (name, v) in RECORDED_JOINTS.iter().zip(s.joints[k]) {
-            rec.set(name, v)?;
+        for (name, v) in s.joint_names.iter().zip(&s.joints[k]) {
+            rec.set(name, *v)?;
         }
     }
     Ok(rec)

@@ -15,8 +15,10 @@
 //! Inactive tasks (activation weight 0) are left out of the stack; blended tasks get the
 //! row softness of [`crate::ik::blend`].
 
+use super::frames::{arm_bodies, WalkTaskFrames, JOINT_TASKS};
 use super::rows::{com_jacobian_from_ag, put_rows};
 use super::targets::{FootFrame, LolaTargets, TaskId};
+use super::task::Frame;
 use crate::error::IkError;
 use crate::ik::blend::Activation;
 use crate::ik::orientation::orientation_error;
@@ -24,17 +26,6 @@ use crate::ik::TaskMap;
 use biped_dynamics::{Centroidal, Data, JacobianFrame, Jacobians, Model};
 use biped_robots::lola::LolaModel;
 use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Vector3};
-
-/// Names of the joints of the 1-D tasks, in [`TaskId::ALL`] order.
-const JOINTS: [&str; 7] = [
-    "pelvis_rotation",
-    "torso",
-    "r_toe",
-    "l_toe",
-    "head_pan",
-    "head",
-    "camera",
-];
 
 /// Kinematic quantities measured at one configuration.
 #[derive(Debug, Clone, Copy)]
@@ -54,11 +45,11 @@ pub struct LolaTasks {
     jac: Jacobians,
     cen: Centroidal,
     torso: usize,
-    soles: [usize; 2],
-    toes: [usize; 2],
+    soles: [Frame; 2],
+    toes: Option<[Frame; 2]>,
     arms: [Vec<(usize, Vector3<f64>, f64)>; 2],
     arm_mass: [f64; 2],
-    joint_q: [usize; 7],
+    joint_q: [Option<usize>; 7],
     joint_v: [usize; 7],
     /// Task targets `x_d` and feed-forward velocities.
     pub targets: LolaTargets,
@@ -76,42 +67,42 @@ pub struct LolaTasks {
 impl LolaTasks {
     /// Task set for `lola` (Type 2 expected), all tasks on, blend ramps of `ramp_time` seconds.
     pub fn new(lola: &LolaModel, ramp_time: f64) -> Result<Self, IkError> {
-        let model = lola.model.clone();
-        let id = |n: &str| {
-            model
-                .body_id(n)
-                .ok_or_else(|| IkError::UnknownName(n.to_string()))
-        };
-        let (torso, soles) = (id("torso")?, [id("r_sole")?, id("l_sole")?]);
-        let toes = [id("r_toe")?, id("l_toe")?];
-        let arms = [
-            arm_bodies(&model, id("r_shoulder")?),
-            arm_bodies(&model, id("l_shoulder")?),
-        ];
-        let arm_mass = [
-            arms[0].iter().map(|a| a.2).sum(),
-            arms[1].iter().map(|a| a.2).sum(),
-        ];
-        let (mut joint_q, mut joint_v) = ([0; 7], [0; 7]);
-        for (k, name) in JOINTS.iter().enumerate() {
-            let l = lola.limits.iter().find(|l| l.name == *name);
-            let l = l.ok_or_else(|| IkError::UnknownName(name.to_string()))?;
-            (joint_q[k], joint_v[k]) = (l.q_index, l.v_index);
+        Self::with_frames(&lola.model, &WalkTaskFrames::lola(lola)?, ramp_time)
+    }
+
+    /// Task set on `model` with the bodies and joints of `frames`, all tasks on (the joint
+    /// tasks of unused slots stay off), blend ramps of `ramp_time` seconds.
+    pub fn with_frames(
+        model: &Model,
+        frames: &WalkTaskFrames,
+        ramp_time: f64,
+    ) -> Result<Self, IkError> {
+        let model = model.clone();
+        frames.check(&model)?;
+        let arms = frames.arm_roots.map(|root| arm_bodies(&model, root));
+        let arm_mass = [0, 1].map(|s| arms[s].iter().map(|a| a.2).sum());
+        let joint_q = frames.joints.map(|j| j.map(|(q, _)| q));
+        let joint_v = frames.joints.map(|j| j.map_or(0, |(_, v)| v));
+        let mut activation = [Activation::new(true, ramp_time); 15];
+        for (k, j) in frames.joints.iter().enumerate() {
+            if j.is_none() {
+                activation[JOINT_TASKS[k].index()] = Activation::new(false, ramp_time);
+            }
         }
         let nv = model.nv();
         Ok(Self {
             data: Data::new(&model),
             jac: Jacobians::new(&model),
             cen: Centroidal::new(&model),
-            torso,
-            soles,
-            toes,
+            torso: frames.torso,
+            soles: frames.soles,
+            toes: frames.toes,
             arms,
             arm_mass,
             joint_q,
             joint_v,
             targets: LolaTargets::default(),
-            activation: [Activation::new(true, ramp_time); 15],
+            activation,
             jc: DMatrix::zeros(3, nv),
             j3: DMatrix::zeros(3, nv),
             jarm: DMatrix::zeros(3, nv),
@@ -140,11 +131,18 @@ impl LolaTasks {
 
     /// Requests switching task `id` on or off (ramped by [`Self::advance`]).
     pub fn switch(&mut self, id: TaskId, on: bool) {
+        let on = on && self.available(id);
         self.activation[id.index()].switch(on);
+    }
+
+    /// False for the joint task of an unused slot (the robot has no such joint).
+    pub fn available(&self, id: TaskId) -> bool {
+        id.joint_slot().is_none_or(|k| self.joint_q[k].is_some())
     }
 
     /// Switches task `id` on or off immediately (no ramp).
     pub fn set_active_now(&mut self, id: TaskId, on: bool) {
+        let on = on && self.available(id);
         let a = &mut self.activation[id.index()];
         a.switch(on);
         a.level = a.target;
@@ -167,18 +165,19 @@ impl LolaTasks {
         }
         t.cog = m.cog;
         t.upper_body = m.torso_rot;
-        for k in 0..7 {
-            t.joints[k] = q[self.joint_q[k]];
+        for (k, i) in self.joint_q.iter().enumerate() {
+            t.joints[k] = i.map_or(0.0, |i| q[i]);
         }
         t.velocity.fill(0.0);
         Ok(())
     }
 
-    /// Body of the TCP of foot slot `s` (0 = right, 1 = left) for its target frame.
-    fn foot_body(&self, s: usize) -> usize {
-        match self.targets.foot_frame[s] {
-            FootFrame::Sole => self.soles[s],
-            FootFrame::Toe => self.toes[s],
+    /// TCP frame of foot slot `s` (0 = right, 1 = left) for its target frame (the sole
+    /// frame on feet without toes).
+    fn foot_frame(&self, s: usize) -> &Frame {
+        match (self.targets.foot_frame[s], &self.toes) {
+            (FootFrame::Toe, Some(toes)) => &toes[s],
+            _ => &self.soles[s],
         }
     }
 
@@ -201,11 +200,14 @@ impl LolaTasks {
             }
             *cog /= mass;
         }
-        let feet = [self.foot_body(0), self.foot_body(1)];
+        let feet = [*self.foot_frame(0), *self.foot_frame(1)];
+        let at =
+            |f: &Frame| self.data.world_pos[f.body] + pose(f.body) * f.offset.translation.vector;
+        let rot = |f: &Frame| pose(f.body) * f.offset.rotation.to_rotation_matrix().into_inner();
         Ok(Measured {
             cog: self.cen.com(),
-            foot_pos: [self.data.world_pos[feet[0]], self.data.world_pos[feet[1]]],
-            foot_rot: [pose(feet[0]), pose(feet[1])],
+            foot_pos: [at(&feet[0]), at(&feet[1])],
+            foot_rot: [rot(&feet[0]), rot(&feet[1])],
             torso_rot: pose(self.torso),
             arm_cog,
         })
@@ -223,19 +225,20 @@ impl LolaTasks {
     ) -> Result<(), IkError> {
         let kin = |e: biped_dynamics::JacobianError| IkError::Kinematics(e.to_string());
         let rpt = planning_rotation(self.targets.planning_yaw).transpose();
-        let zero = Vector3::zeros();
         let e = match id {
             TaskId::RightFootPosition | TaskId::LeftFootPosition => {
                 let s = (id == TaskId::LeftFootPosition) as usize;
+                let f = *self.foot_frame(s);
+                let offset = f.offset.translation.vector;
                 self.jac
-                    .point_jacobian(self.foot_body(s), &zero, &mut self.j3)
+                    .point_jacobian(f.body, &offset, &mut self.j3)
                     .map_err(kin)?;
                 put_rows(out, r, &rpt, &self.j3, 0, Some(&self.jc), 0);
                 self.targets.foot_position[s] - rpt * (m.foot_pos[s] - m.cog)
             }
             TaskId::RightFootOrientation | TaskId::LeftFootOrientation => {
                 let s = (id == TaskId::LeftFootOrientation) as usize;
-                let (sole, frame) = (self.foot_body(s), JacobianFrame::WorldAligned);
+                let (sole, frame) = (self.foot_frame(s).body, JacobianFrame::WorldAligned);
                 self.jac
                     .body_jacobian(sole, frame, &mut self.j6)
                     .map_err(kin)?;
@@ -261,7 +264,8 @@ impl LolaTasks {
                 let k = id.joint_slot().unwrap_or(0);
                 out.row_mut(r).fill(0.0);
                 out[(r, self.joint_v[k])] = 1.0;
-                err[r] = self.targets.joints[k] - q[self.joint_q[k]];
+                let qi = self.joint_q[k].unwrap_or(0);
+                err[r] = self.targets.joints[k] - q[qi];
                 return Ok(());
             }
         };
@@ -360,25 +364,4 @@ impl TaskMap for LolaTasks {
 /// Rotation of the planning frame: yaw about the inertial vertical.
 fn planning_rotation(yaw: f64) -> Matrix3<f64> {
     Rotation3::from_axis_angle(&Vector3::z_axis(), yaw).into_inner()
-}
-
-/// Bodies of the subtree of `root` with their CoM (body frame) and mass (massless skipped).
-fn arm_bodies(model: &Model, root: usize) -> Vec<(usize, Vector3<f64>, f64)> {
-    let in_subtree = |mut b: usize| loop {
-        if b == root {
-            return true;
-        }
-        match model.bodies()[b].parent() {
-            Some(p) => b = p,
-            None => return false,
-        }
-    };
-    (0..model.nbodies())
-        .filter(|&b| in_subtree(b))
-        .map(|b| {
-            let i = model.bodies()[b].inertia();
-            (b, i.com(), i.mass())
-        })
-        .filter(|a| a.2 > 0.0)
-        .collect()
 }

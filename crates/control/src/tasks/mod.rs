@@ -9,8 +9,12 @@
 //! [`LolaTasks`] stacks the active tasks of [`TaskId`] (Table 4.2 plus joint tasks for the
 //! head pan/tilt and camera vergence, so that all tasks together are non-redundant:
 //! 31 rows for 31 DoF) and implements [`crate::ik::TaskMap`]. Targets are a
-//! [`LolaTargets`] struct.
+//! [`LolaTargets`] struct. The bodies and joints it acts on are a [`WalkTaskFrames`]: Lola's,
+//! or any robot's (sole frames with an offset on a foot body, no toes, up to five held trunk
+//! and head joints in the joint slots, unused slots off), which is how `biped walk --robot`
+//! walks a described robot with the same task set.
 
+mod frames;
 mod lola;
 mod pose;
 mod retract;
@@ -20,6 +24,7 @@ mod stack;
 mod targets;
 pub mod task;
 
+pub use frames::WalkTaskFrames;
 pub use lola::LolaTasks;
 pub use pose::{lola_joint_cost, standing_configuration};
 pub use stack::{TaskHandle, TaskStack};

@@ -1,31 +1,32 @@
-//! [`WalkController`]: one 1 kHz IK cycle of Lola over a walking-pattern sample (thesis 4.5,
+//! [`WalkController`]: one 1 kHz IK cycle of a [`WalkRobot`] (Lola, or a described robot)
+//! over a walking-pattern sample (thesis 4.5,
 //! 5.2, 7.3-7.5): targets, closed-loop task velocities (4.13)-(4.16), Klein-Huang RMRC
 //! (Alg. 4.3) with null-space gradient `grad H_J + grad H_C` (+ compensation) and the
-//! method's weight, and the SE(3) integration of q. Everything is preallocated in `new`.
+//! method's weight, and the SE(3) integration of q. Everything is preallocated in
+//! [`WalkController::for_robot`].
 
-use super::error::{model_err, WalkError};
+use super::error::WalkError;
 use super::method::{Method, WalkParams};
-use super::posture::{
-    arm_lock_weight, arm_pivots, body, place_on_footprints, swing_on_circle, ArmPivot,
-};
+use super::posture::{arm_lock_weight, arm_pivots, place_on_footprints, swing_on_circle, ArmPivot};
+use super::robot::WalkRobot;
 use super::targets::{legs, set_targets};
 use crate::avoidance::{AvoidanceParams, AvoidanceSummary, CollisionAvoidance};
 use crate::ik::joint_cost::JointCost;
-use crate::ik::{
-    JointLimits, JointRange, RmrcProblem, SaturatedRmrc, SaturationReport, TaskBuffers, TaskMap,
-    Weight,
-};
+use crate::ik::{RmrcProblem, SaturatedRmrc, SaturationReport, TaskBuffers, TaskMap, Weight};
 use crate::momentum::{
     vertical_inertia, ArmSwing, ArmSwingNominal, ArmTargets, Compensation, CompensationLaw,
-    MomentumMinimisation, MomentumReference, VerticalMomentum, LOLA_ARMS,
+    MomentumMinimisation, MomentumReference, VerticalMomentum,
 };
 use crate::pattern::{FootGeometry, PatternSample, WalkingPattern};
-use crate::tasks::{lola_joint_cost, LolaTasks, TaskId};
-use biped_dynamics::{Data, Jacobians};
-use biped_robots::lola::{lola_collision_model, LolaModel};
+use crate::tasks::{LolaTasks, TaskId};
+use biped_dynamics::Data;
+use biped_robots::lola::LolaModel;
+use joints::{joint_cost, joint_limits};
 use nalgebra::{DVector, Vector3};
 
+mod access;
 mod compensate;
+mod joints;
 
 /// What one cycle did.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -40,7 +41,8 @@ pub struct CycleInfo {
     pub limits: SaturationReport,
 }
 
-/// Lola's walking IK with one arm method (see [`Method`]).
+/// The walking IK of a [`WalkRobot`] (Lola by [`Self::new`]) with one arm method (see
+/// [`Method`]).
 ///
 /// # Example
 ///
@@ -87,6 +89,7 @@ pub struct WalkController {
     buf: TaskBuffers,
     sns: SaturatedRmrc,
     foot: FootGeometry,
+    toes: bool,
     xcmd: DVector<f64>,
     grad: DVector<f64>,
     grad_c: DVector<f64>,
@@ -121,16 +124,27 @@ impl WalkController {
         params: WalkParams,
         pattern: &WalkingPattern,
     ) -> Result<Self, WalkError> {
+        Self::for_robot(&WalkRobot::lola(lola)?, method, params, pattern)
+    }
+
+    /// Controller for `robot` standing on the first footprints of `pattern`, after
+    /// `params.settle_time` of IK cycles on its first sample.
+    pub fn for_robot(
+        robot: &WalkRobot,
+        method: Method,
+        params: WalkParams,
+        pattern: &WalkingPattern,
+    ) -> Result<Self, WalkError> {
         let dt = pattern.params().dt;
         params.validate(dt)?;
         let first = pattern.sample(0).ok_or(WalkError::InvalidParameter {
             name: "pattern",
             reason: "has no samples".into(),
         })?;
-        let model = &lola.model;
+        let model = &robot.model;
         let nv = model.nv();
-        let mut tasks = LolaTasks::new(lola, 0.2)?;
-        let q = place_on_footprints(lola, &mut tasks, first, params.arm_pose)?;
+        let mut tasks = LolaTasks::with_frames(model, &robot.frames, 0.2)?;
+        let q = place_on_footprints(robot, &mut tasks, first, params.arm_pose)?;
         tasks.set_targets_from(&q)?;
         let com_offset = tasks.targets.cog - first.com;
         let arm_on = method.arm_tasks();
@@ -144,18 +158,17 @@ impl WalkController {
             right_leg,
         };
         let swing = ArmSwing::with_mask(params.arm_swing_scale, Vector3::x(), nominal)?;
-        let cost = lola_joint_cost(
-            lola,
+        let cost = joint_cost(
+            robot,
             &q,
             params.comfort_weight,
             params.limit_weight,
             params.limit_margin,
         )?;
         let avoid = if params.avoidance {
-            let segments = lola_collision_model(lola).map_err(model_err)?.model;
             Some(CollisionAvoidance::new(
                 model,
-                segments,
+                robot.collision.clone(),
                 AvoidanceParams::default(),
             )?)
         } else {
@@ -164,13 +177,14 @@ impl WalkController {
         let minim = MomentumMinimisation::new(params.minimization_delta)?;
         let weight = match method {
             Method::Minimization => minim.weight(nv)?,
-            Method::None => arm_lock_weight(lola, params.arm_lock_weight)?,
+            Method::None => arm_lock_weight(robot, params.arm_lock_weight)?,
             _ => Weight::Identity,
         };
         // only the reducing set is used (see `compensate`)
-        let comp = Compensation::new(model, &LOLA_ARMS, CompensationLaw::Exact)?;
+        let reducing: Vec<&str> = robot.reducing.iter().map(String::as_str).collect();
+        let comp = Compensation::new(model, &reducing, CompensationLaw::Exact)?;
         let izz = vertical_inertia(model, &mut Data::new(model), &q)?;
-        let shoulders = [body(lola, "r_shoulder")?, body(lola, "l_shoulder")?];
+        let shoulders = robot.frames.arm_roots;
         let arm_pivot = arm_pivots(&tasks, &shoulders);
         let mut ctrl = Self {
             arm_pivot,
@@ -178,8 +192,9 @@ impl WalkController {
             method,
             params,
             buf: TaskBuffers::new(&tasks),
-            sns: SaturatedRmrc::new(TaskId::TOTAL_ROWS, nv, joint_limits(lola, &params)?)?,
+            sns: SaturatedRmrc::new(TaskId::TOTAL_ROWS, nv, joint_limits(robot, &params)?)?,
             foot: pattern.params().foot,
+            toes: robot.frames.toes.is_some(),
             xcmd: DVector::zeros(TaskId::TOTAL_ROWS),
             grad: DVector::zeros(nv),
             grad_c: DVector::zeros(nv),
@@ -272,7 +287,13 @@ impl WalkController {
             self.reference.start_step(s.t, t_step, turn)?;
         }
         let t = &mut self.tasks.targets;
-        set_targets(s, &self.com_offset, &self.foot, arms.as_ref(), t);
+        set_targets(
+            s,
+            &self.com_offset,
+            (&self.foot, self.toes),
+            arms.as_ref(),
+            t,
+        );
         Ok(())
     }
 
@@ -305,59 +326,4 @@ impl WalkController {
         };
         Ok(self.sns.solve(&p, &self.q, dt, &mut self.qdot)?)
     }
-
-    /// The method.
-    pub fn method(&self) -> Method {
-        self.method
-    }
-
-    /// Configuration for the next cycle.
-    pub fn q(&self) -> &DVector<f64> {
-        &self.q
-    }
-
-    /// Configuration at which the last cycle evaluated tasks and momentum.
-    pub fn q_eval(&self) -> &DVector<f64> {
-        &self.q_eval
-    }
-
-    /// Joint velocities of the last cycle (at [`Self::q_eval`]).
-    pub fn qdot(&self) -> &DVector<f64> {
-        &self.qdot
-    }
-
-    /// `J_Lz^T` at [`Self::q_eval`] (7.2).
-    pub fn jlz(&self) -> &DVector<f64> {
-        self.vm.jacobian_z()
-    }
-
-    /// The limit-keeping solver (its box and fixed joints of the last cycle).
-    pub fn limiter(&self) -> &SaturatedRmrc {
-        &self.sns
-    }
-
-    /// The task set (targets, activations, model).
-    pub fn tasks(&self) -> &LolaTasks {
-        &self.tasks
-    }
-
-    /// Kinematics at [`Self::q_eval`].
-    pub fn kinematics(&self) -> (&Data, &Jacobians) {
-        self.tasks.kinematics()
-    }
-}
-
-/// Hard limits of every actuated joint of `lola` with the settings of `params`.
-fn joint_limits(lola: &LolaModel, params: &WalkParams) -> Result<JointLimits, WalkError> {
-    let ranges = lola
-        .limits
-        .iter()
-        .map(|l| JointRange {
-            q_index: l.q_index,
-            v_index: l.v_index,
-            lower: l.lower,
-            upper: l.upper,
-        })
-        .collect();
-    Ok(JointLimits::new(ranges, params.limits)?)
 }

@@ -24,6 +24,9 @@ pub enum WalkError {
     /// Model, kinematics or dynamics failure.
     #[error("model: {0}")]
     Model(String),
+    /// A robot description cannot be walked (names the file and what is missing).
+    #[error("{0}")]
+    Description(String),
     /// A parameter is out of range.
     #[error("invalid parameter `{name}`: {reason}")]
     InvalidParameter {

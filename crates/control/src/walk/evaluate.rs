@@ -15,11 +15,13 @@
 use super::controller::WalkController;
 use super::error::{model_err, WalkError};
 use super::friction::{FrictionLoad, Support};
+use super::robot::{frame_position, WalkRobot};
 use crate::avoidance::{AvoidanceParams, CollisionAvoidance};
 use crate::momentum::LzRate;
 use crate::pattern::{Foot, FootGeometry, PatternSample};
+use crate::tasks::Frame;
 use biped_dynamics::{inverse_dynamics, Data, JointModel, Model};
-use biped_robots::lola::{lola_collision_model, LolaModel};
+use biped_robots::lola::LolaModel;
 use nalgebra::{DVector, Vector3};
 
 /// Metrics of one cycle (SI units).
@@ -58,7 +60,7 @@ pub struct Evaluator {
     qdd: DVector<f64>,
     started: bool,
     root: usize,
-    soles: [usize; 2],
+    soles: [Frame; 2],
     limits: Vec<(usize, f64, f64)>,
     names: Vec<String>,
     support: Support,
@@ -70,10 +72,16 @@ impl Evaluator {
     /// Evaluator for `lola` with control period `dt`, the default sole geometry and the
     /// friction coefficient of the contact simulation's default ground.
     pub fn new(lola: &LolaModel, dt: f64) -> Result<Self, WalkError> {
-        let model = &lola.model;
-        let segments = lola_collision_model(lola).map_err(model_err)?.model;
+        Self::for_robot(&WalkRobot::lola(lola)?, dt)
+    }
+
+    /// Evaluator for `robot` with control period `dt`, the robot's sole geometry and the
+    /// friction coefficient of the contact simulation's default ground.
+    pub fn for_robot(robot: &WalkRobot, dt: f64) -> Result<Self, WalkError> {
+        let model = &robot.model;
         let root = floating_root(model)?;
-        let id = |n: &str| body(model, n);
+        let [right, left] = robot.frames.soles;
+        let segments = robot.collision.clone();
         Ok(Self {
             data: Data::new(model),
             distances: CollisionAvoidance::new(model, segments, AvoidanceParams::default())?,
@@ -83,15 +91,15 @@ impl Evaluator {
             qdd: DVector::zeros(model.nv()),
             started: false,
             root,
-            soles: [id("l_sole")?, id("r_sole")?],
-            limits: lola
-                .limits
+            soles: [left, right],
+            limits: robot
+                .joints
                 .iter()
                 .map(|l| (l.q_index, l.lower, l.upper))
                 .collect(),
-            names: lola.limits.iter().map(|l| l.name.clone()).collect(),
+            names: robot.joints.iter().map(|l| l.name.clone()).collect(),
             support: Support::new(),
-            geometry: FootGeometry::default(),
+            geometry: robot.foot,
             mu: biped_sim::contact::ContactParams::default().friction,
         })
     }
@@ -112,8 +120,8 @@ impl Evaluator {
         })
     }
 
-    /// Body ids of the sole frames `[left, right]`.
-    pub fn soles(&self) -> [usize; 2] {
+    /// The sole frames `[left, right]`.
+    pub fn soles(&self) -> [Frame; 2] {
         self.soles
     }
 
@@ -154,10 +162,11 @@ impl Evaluator {
         self.started = true;
         self.qdot_prev.copy_from(qdot);
         let (kin, _) = ctrl.kinematics();
+        let [left, right] = self.soles.map(|f| frame_position(kin, &f));
         let point = match sample.phase.stance_foot() {
-            Some(Foot::Left) => kin.world_pos[self.soles[0]],
-            Some(Foot::Right) => kin.world_pos[self.soles[1]],
-            None => 0.5 * (kin.world_pos[self.soles[0]] + kin.world_pos[self.soles[1]]),
+            Some(Foot::Left) => left,
+            Some(Foot::Right) => right,
+            None => 0.5 * (left + right),
         };
         let model = ctrl.tasks().model();
         let state = (q, qdot, &self.qdd);

@@ -1,4 +1,8 @@
-//! `biped walk`: the full IK stack of Lola over a walking pattern (thesis 4.5, 5.2, 7.3-7.5).
+//! `biped walk`: the full IK stack of Lola over a walking pattern (thesis 4.5, 5.2, 7.3-7.5),
+//! written against the robot-neutral [`WalkRobot`] (Lola, or any robot of a description file).
+//!
+//! - [`robot`]: [`WalkRobot`], what the walk needs to know of a robot (frames, joints, arm
+//!   and momentum DoFs, collision model, posture, pattern geometry from its legs).
 //!
 //! - [`method`]: the arm methods compared in ch. 7 (`none`, `reference` 7.3.1,
 //!   `compensation` 7.3.2, `minimization` 7.5) and the tuning [`WalkParams`].
@@ -27,7 +31,8 @@
 //! - Minimisation (7.5): `W = delta E + J_Lz^T J_Lz` with `delta = 0.003` (the arms' entries
 //!   of `J_Lz` are small, so a larger delta leaves most of `L_z`); the null-space steps are
 //!   scaled by delta so that `W^-1 grad H` keeps its size.
-//! - Posture: knees bent [`WALK_KNEE`] = 0.55 rad (hip height between the stance ankle's
+//! - Posture (Lola; a described robot walks in its comfort pose, [`robot`]): knees bent
+//!   [`WALK_KNEE`] = 0.55 rad (hip height between the stance ankle's
 //!   dorsiflexion limit, which a lower hip reaches at the end of single support, and the
 //!   reach of the legs at touch-down, which a higher hip loses); elbows at -0.8 rad. The
 //!   pattern rolls the feet (toe-off, heel strike, [`crate::pattern::roll`]): while a heel is
@@ -47,6 +52,7 @@ pub mod evaluate;
 pub mod friction;
 pub mod method;
 mod posture;
+pub mod robot;
 pub mod run;
 mod targets;
 pub mod trajectory;
@@ -60,6 +66,7 @@ pub use error::WalkError;
 pub use evaluate::{CycleMetrics, Evaluator};
 pub use method::{Method, WalkParams};
 pub use posture::{walk_pattern_params, walk_start_configuration, WALK_ELBOW, WALK_KNEE};
-pub use run::{run_walk, WalkRun, WalkSeries, WalkSummary};
+pub use robot::{WalkJoint, WalkRobot};
+pub use run::{run_walk, run_walk_robot, WalkRun, WalkSeries, WalkSummary};
 pub use trajectory::Trajectory;
 pub use verdict::{Verdict, Violation, WalkVerdicts};

@@ -2,6 +2,7 @@
 //! the reference method's arm swing about the shoulder (see the module docs of [`super`]).
 
 use super::error::{model_err, WalkError};
+use super::robot::{frame_position, WalkRobot};
 use crate::ik::Weight;
 use crate::momentum::{PointTarget, LOLA_ARMS};
 use crate::pattern::fit::{bent_knee_pose, standing_com_height};
@@ -10,24 +11,19 @@ use crate::tasks::LolaTasks;
 use biped_robots::lola::LolaModel;
 use nalgebra::{DVector, Vector3};
 
-/// Standing configuration with the sole midpoint on the pattern's first footprints' midpoint.
+/// Start configuration of `robot` with the sole midpoint on the pattern's first footprints'
+/// midpoint.
 pub(crate) fn place_on_footprints(
-    lola: &LolaModel,
+    robot: &WalkRobot,
     tasks: &mut LolaTasks,
     first: &PatternSample,
     arm_pose: [f64; 3],
 ) -> Result<DVector<f64>, WalkError> {
-    let mut q = walk_start_configuration(lola, arm_pose)?;
+    let mut q = robot.start_configuration(arm_pose);
     tasks.set_targets_from(&q)?;
     let (data, _) = tasks.kinematics();
-    let sole = |n: &str| {
-        let id = lola
-            .model
-            .body_id(n)
-            .ok_or_else(|| model_err(format!("no body {n}")))?;
-        Ok::<_, WalkError>(data.world_pos[id])
-    };
-    let model_mid = 0.5 * (sole("l_sole")? + sole("r_sole")?);
+    let [right, left] = robot.frames.soles.map(|f| frame_position(data, &f));
+    let model_mid = 0.5 * (left + right);
     let pattern_mid =
         0.5 * (first.feet[0].pose.translation.vector + first.feet[1].pose.translation.vector);
     let shift = pattern_mid - model_mid;
@@ -91,13 +87,6 @@ pub(crate) struct ArmPivot {
     rho: f64,
 }
 
-/// Body index by name.
-pub(crate) fn body(lola: &LolaModel, name: &str) -> Result<usize, WalkError> {
-    lola.model
-        .body_id(name)
-        .ok_or_else(|| model_err(format!("no body {name}")))
-}
-
 /// [`ArmPivot`]s (right, left) at the configuration of `tasks`' last evaluation.
 pub(crate) fn arm_pivots(tasks: &LolaTasks, shoulders: &[usize; 2]) -> [ArmPivot; 2] {
     let (data, _) = tasks.kinematics();
@@ -124,11 +113,11 @@ pub(crate) fn swing_on_circle(arm: &mut PointTarget, p: &ArmPivot, shoulder: &Ve
     arm.velocity.z = x * arm.velocity.x / z;
 }
 
-/// Diagonal weight: 1 except `lock` on the six arm joints (the `none` method).
-pub(crate) fn arm_lock_weight(lola: &LolaModel, lock: f64) -> Result<Weight, WalkError> {
-    let mut d = DVector::from_element(lola.model.nv(), 1.0);
-    for name in LOLA_ARMS {
-        let l = lola.limits.iter().find(|l| l.name == name);
+/// Diagonal weight: 1 except `lock` on the arm joints of `robot` (the `none` method).
+pub(crate) fn arm_lock_weight(robot: &WalkRobot, lock: f64) -> Result<Weight, WalkError> {
+    let mut d = DVector::from_element(robot.model.nv(), 1.0);
+    for name in &robot.arm_joints {
+        let l = robot.joint(name);
         let l = l.ok_or_else(|| model_err(format!("no joint {name}")))?;
         d[l.v_index] = lock;
     }

@@ -4,6 +4,7 @@ use super::controller::WalkController;
 use super::error::{model_err, WalkError};
 use super::evaluate::{CycleMetrics, Evaluator};
 use super::method::{Method, WalkParams};
+use super::robot::WalkRobot;
 use super::trajectory::Trajectory;
 use super::verdict::WalkVerdicts;
 use crate::momentum::LOLA_ARMS;
@@ -49,8 +50,10 @@ pub struct WalkSeries {
     pub zmp: Vec<[f64; 2]>,
     /// Joints the IK held at their limit box in each cycle.
     pub limited: Vec<usize>,
-    /// Angles of [`RECORDED_JOINTS`] (one row per cycle).
-    pub joints: Vec<[f64; 8]>,
+    /// Names of the recorded joints ([`WalkRobot::recorded`]; Lola: [`RECORDED_JOINTS`]).
+    pub joint_names: Vec<String>,
+    /// Angles of the recorded joints (one row per cycle, order of `joint_names`).
+    pub joints: Vec<Vec<f64>>,
 }
 
 /// Summary of one walk (keys of `summary.json`; SI units, distances in m).
@@ -130,20 +133,33 @@ pub fn run_walk(
     method: Method,
     params: WalkParams,
 ) -> Result<WalkRun, WalkError> {
+    run_walk_robot(&WalkRobot::lola(lola)?, pattern, method, params)
+}
+
+/// [`run_walk`] for any [`WalkRobot`] (e.g. one of a robot description file).
+pub fn run_walk_robot(
+    robot: &WalkRobot,
+    pattern: &WalkingPattern,
+    method: Method,
+    params: WalkParams,
+) -> Result<WalkRun, WalkError> {
     let dt = pattern.params().dt;
-    let mut ctrl = WalkController::new(lola, method, params, pattern)?;
-    let mut eval = Evaluator::new(lola, dt)?.with_ground(pattern.params().foot, params.friction)?;
+    let mut ctrl = WalkController::for_robot(robot, method, params, pattern)?;
+    let mut eval =
+        Evaluator::for_robot(robot, dt)?.with_ground(pattern.params().foot, params.friction)?;
     let mut verdicts = WalkVerdicts::new(eval.mu());
-    let joints = RECORDED_JOINTS.map(|n| lola.limits.iter().find(|l| l.name == n));
-    let mut idx = [0; 8];
-    for (i, j) in idx.iter_mut().zip(joints) {
-        *i = j
-            .ok_or_else(|| model_err("recorded joint missing"))?
-            .q_index;
-    }
+    let idx = robot
+        .recorded
+        .iter()
+        .map(|n| robot.joint(n).map(|j| j.q_index))
+        .collect::<Option<Vec<_>>>()
+        .ok_or_else(|| model_err("recorded joint missing"))?;
     let n = pattern.len();
-    let mut s = WalkSeries::default();
-    let mut trajectory = Trajectory::with_capacity(lola.model.q_names(), n);
+    let mut s = WalkSeries {
+        joint_names: robot.recorded.clone(),
+        ..WalkSeries::default()
+    };
+    let mut trajectory = Trajectory::with_capacity(robot.model.q_names(), n);
     let soles = eval.soles();
     for sample in pattern.iter() {
         let start = Instant::now();
@@ -152,7 +168,7 @@ pub fn run_walk(
         let m = eval.evaluate(&ctrl, sample)?;
         record_verdicts(&mut verdicts, &eval, sample, &m);
         verdicts.tracking(sample.t, info.error_norm, params.task_tolerance, || {
-            held_joints(lola, &ctrl)
+            held_joints(robot, &ctrl)
         });
         s.t.push(sample.t);
         s.lz.push(m.lz);
@@ -164,7 +180,8 @@ pub fn run_walk(
         s.zmp.push([m.friction.cop.x, m.friction.cop.y]);
         s.task_error.push(info.error_norm);
         s.limited.push(info.limits.fixed + info.limits.clamped);
-        s.joints.push(idx.map(|i| ctrl.q_eval()[i]));
+        s.joints
+            .push(idx.iter().map(|&i| ctrl.q_eval()[i]).collect());
         trajectory.push(sample.t, &ctrl, &m, soles);
     }
     let summary = summarize(&s, n, verdicts);
@@ -201,10 +218,10 @@ fn record_verdicts(
 }
 
 /// The joints the IK held at their limit box in the last cycle, for the tracking verdict.
-fn held_joints(lola: &LolaModel, ctrl: &WalkController) -> String {
+fn held_joints(robot: &WalkRobot, ctrl: &WalkController) -> String {
     let fixed = ctrl.limiter().fixed();
-    let names: Vec<&str> = lola
-        .limits
+    let names: Vec<&str> = robot
+        .joints
         .iter()
         .filter(|l| fixed.get(l.v_index).copied().unwrap_or(false))
         .map(|l| l.name.as_str())

@@ -42,13 +42,13 @@ pub(crate) fn legs(s: &PatternSample, com_offset: &Vector3<f64>) -> [PointTarget
 const TOE_TASK: [TaskId; 2] = [TaskId::RightToe, TaskId::LeftToe];
 
 /// Writes all targets and feed-forward velocities of `s` into `t`: foot tasks on the sole, or
-/// on the toe segment while the heel is lifted (toe-off), toe joint tasks from the pattern's
-/// toe angles; the arm CoG targets only if `arms` is given, the other joint targets are left
-/// as they are.
+/// on the toe segment while the heel is lifted (toe-off) if the feet have toes (`foot.1`),
+/// toe joint tasks from the pattern's toe angles; the arm CoG targets only if `arms` is
+/// given, the other joint targets are left as they are.
 pub(crate) fn set_targets(
     s: &PatternSample,
     com_offset: &Vector3<f64>,
-    foot: &FootGeometry,
+    (foot, toes): (&FootGeometry, bool),
     arms: Option<&ArmTargets>,
     t: &mut LolaTargets,
 ) {
@@ -64,7 +64,7 @@ pub(crate) fn set_targets(
     for (slot, side) in SLOT_FOOT.iter().enumerate() {
         let f = s.foot(*side);
         let (frame, (pose, linear, angular)) = match f.contact {
-            Contact::Toe => (FootFrame::Toe, f.toe_frame(foot)),
+            Contact::Toe if toes => (FootFrame::Toe, f.toe_frame(foot)),
             _ => (FootFrame::Sole, (f.pose, f.linear, f.angular)),
         };
         t.foot_frame[slot] = frame;
@@ -79,9 +79,11 @@ pub(crate) fn set_targets(
             v[pos_id.full_offset() + i] = lin[i];
             v[rot_id.full_offset() + i] = w[i];
         }
-        let toe = TOE_TASK[slot];
-        t.joints[toe.joint_slot().unwrap_or(0)] = f.toe_angle;
-        v[toe.full_offset()] = f.toe_rate;
+        if toes {
+            let toe = TOE_TASK[slot];
+            t.joints[toe.joint_slot().unwrap_or(0)] = f.toe_angle;
+            v[toe.full_offset()] = f.toe_rate;
+        }
     }
     for i in 0..3 {
         v[TaskId::CoG.full_offset() + i] = s.com_vel[i];

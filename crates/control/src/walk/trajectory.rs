@@ -3,6 +3,7 @@
 
 use super::controller::WalkController;
 use super::evaluate::CycleMetrics;
+use crate::tasks::Frame;
 use nalgebra::{Isometry3, Rotation3, Vector3};
 
 /// One walk's motion, one row per control cycle (SI units, world frame, ground `z = 0`).
@@ -43,17 +44,17 @@ impl Trajectory {
     }
 
     /// Appends the cycle `ctrl` has just run at time `t`, evaluated as `m`, with the sole
-    /// bodies `soles`.
-    pub fn push(&mut self, t: f64, ctrl: &WalkController, m: &CycleMetrics, soles: [usize; 2]) {
+    /// frames `soles` (`[left, right]`).
+    pub fn push(&mut self, t: f64, ctrl: &WalkController, m: &CycleMetrics, soles: [Frame; 2]) {
         let (data, _) = ctrl.kinematics();
         self.t.push(t);
         self.q.extend(ctrl.q_eval().iter());
         self.com.push(vec3(&ctrl.tasks().centroidal().com()));
         self.zmp.push([m.friction.cop.x, m.friction.cop.y]);
-        self.soles.push(soles.map(|b| {
-            let rot = Rotation3::from_matrix_unchecked(data.world_rot[b]);
-            let pose = Isometry3::from_parts(data.world_pos[b].into(), rot.into());
-            pose7(&pose)
+        self.soles.push(soles.map(|f| {
+            let rot = Rotation3::from_matrix_unchecked(data.world_rot[f.body]);
+            let body = Isometry3::from_parts(data.world_pos[f.body].into(), rot.into());
+            pose7(&(body * f.offset))
         }));
         let f = &m.force;
         self.ground.push([f.x, f.y, f.z, m.friction.free_moment]);
