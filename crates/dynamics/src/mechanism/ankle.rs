@@ -469,6 +469,16 @@ impl Coupling for AnkleCoupling {
         2
     }
 
+    /// The screw's rotor spins and its nut slides along the screw axis (the part frame's z,
+    /// [`Self::axis_frame`]); the rod moves generally.
+    fn axial_role(&self) -> super::AxialRole {
+        match self.axis_frame() {
+            Some((_, _, AnklePart::Rotor)) => super::AxialRole::Spins,
+            Some(_) => super::AxialRole::Slides,
+            None => super::AxialRole::General,
+        }
+    }
+
     /// Pose, Jacobian and bias of the part relative to the shank, (3.30)-(3.37).
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
         let q = seed_inputs::<2>(NAME, q_in, qd_in)?;

@@ -82,6 +82,14 @@ impl Coupling for HarmonicDriveRotor {
         1
     }
 
+    /// Spins about its z axis at `N` times the joint rate (3.1).
+    fn axial_role(&self) -> super::AxialRole {
+        super::AxialRole::Geared(crate::spatial::Motion::new(
+            Vector3::new(0.0, 0.0, self.params.ratio),
+            Vector3::zeros(),
+        ))
+    }
+
     /// Pose `A_pk' A_z(N q + offset)` (3.2), Jacobian `[0 0 N 0 0 0]^T` and zero bias (3.1).
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
         super::jet::seed_inputs::<1>(NAME, q_in, qd_in)?;

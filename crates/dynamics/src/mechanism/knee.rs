@@ -345,6 +345,21 @@ impl Coupling for KneeCoupling {
         1
     }
 
+    /// The housing carries the rotor (spinning about its z axis) and the nut (sliding along
+    /// it).
+    fn axial_role(&self) -> super::AxialRole {
+        match self.part {
+            KneePart::Housing => super::AxialRole::Carries,
+            KneePart::Rotor => super::AxialRole::Rides { slides: false },
+            KneePart::Nut => super::AxialRole::Rides { slides: true },
+        }
+    }
+
+    /// Parts of the same drive (equal drive parameters; the inputs tell two knees apart).
+    fn same_drive(&self, other: &Self) -> bool {
+        self.drive == other.drive
+    }
+
     /// Pose, Jacobian and bias of the part relative to the thigh, (3.8)-(3.21).
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError> {
         let [q] = seed_inputs::<1>(NAME, q_in, qd_in)?;

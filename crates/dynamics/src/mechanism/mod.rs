@@ -131,10 +131,46 @@ pub enum MechanismError {
     },
 }
 
+/// How a part moves, as far as the lumped members of a sub-system need to know (the axial
+/// kinds of the O(n) sub-system step, (2.76)): parts that only spin about or slide along one
+/// axis are lumped into the body that carries them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum AxialRole {
+    /// None of the below: the general member kinematics.
+    General,
+    /// Spins about the constant twist `column` (part frame) at its single input's rate: a
+    /// geared rotor.
+    Geared(crate::spatial::Motion),
+    /// Spins about its frame's z axis (a screw's rotor).
+    Spins,
+    /// Slides along its frame's z axis (a screw's nut).
+    Slides,
+    /// Spins about (`slides: false`) or slides along the z axis of its drive's carrier part
+    /// (the part of the same drive and inputs that [`AxialRole::Carries`], see
+    /// [`Coupling::same_drive`]), in that part's frame.
+    Rides {
+        /// Slides rather than spins.
+        slides: bool,
+    },
+    /// Carries the riders of its drive.
+    Carries,
+}
+
 /// A closed-form mechanism part whose relative motion depends on input coordinates.
 pub trait Coupling {
     /// Number of input coordinates (`<= MAX_COUPLED`).
     fn n_inputs(&self) -> usize;
     /// Relative pose, Jacobian and bias at `(q_in, qd_in)` (slices of length `n_inputs`).
     fn motion(&self, q_in: &[f64], qd_in: &[f64]) -> Result<CoupledMotion, MechanismError>;
+    /// How the part moves for the sub-system step ([`AxialRole::General`] unless told).
+    fn axial_role(&self) -> AxialRole {
+        AxialRole::General
+    }
+    /// Whether `other` is a part of the same drive (a rider's carrier is found by it).
+    fn same_drive(&self, _other: &Self) -> bool
+    where
+        Self: Sized,
+    {
+        false
+    }
 }

@@ -2,7 +2,7 @@
 //! concrete [`Coupling`] types, plus two closed-form test mechanisms (a linear gear and a
 //! planar four-bar coupler). Adding a mechanism type is one line in `mechanisms!`.
 
-use crate::mechanism::{CoupledMotion, Coupling, MechanismError, MAX_COUPLED};
+use crate::mechanism::{AxialRole, CoupledMotion, Coupling, MechanismError, MAX_COUPLED};
 use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3, Vector6};
 
 /// Declares [`Mechanism`] with one variant per concrete coupling type and its dispatch.
@@ -27,6 +27,17 @@ macro_rules! mechanisms {
             fn motion(&self, q: &[f64], qd: &[f64]) -> Result<CoupledMotion, MechanismError> {
                 match self {
                     $(Mechanism::$variant(m) => m.motion(q, qd),)*
+                }
+            }
+            fn axial_role(&self) -> AxialRole {
+                match self {
+                    $(Mechanism::$variant(m) => m.axial_role(),)*
+                }
+            }
+            fn same_drive(&self, other: &Self) -> bool {
+                match (self, other) {
+                    $((Mechanism::$variant(a), Mechanism::$variant(b)) => a.same_drive(b),)*
+                    _ => false,
                 }
             }
         }

@@ -31,9 +31,7 @@
 use super::on::add_rigid_congruence;
 use super::rigid::is_axisymmetric;
 use super::Subsystem;
-use crate::mechanism::ankle::AnklePart;
-use crate::mechanism::harmonic_drive::HarmonicDriveRotor;
-use crate::mechanism::knee::{KneeCoupling, KneePart};
+use crate::mechanism::{AxialRole, Coupling};
 use crate::model::coupling::Mechanism;
 use crate::model::JointModel;
 use crate::spatial::{
@@ -252,31 +250,22 @@ pub(crate) fn axial_members(
             let slide = || (unit(true), AxialKind::Slider);
             let mut carrier = sub.parent;
             let mut frame = frames[j];
-            let (column, kind) = match &body.joint_model {
-                JointModel::Coupled {
-                    mechanism: Mechanism::HarmonicDrive(rotor),
-                    ..
-                } if body.v_set.len() == 1 => (rotor_column(rotor), AxialKind::Geared),
-                JointModel::Coupled {
-                    mechanism: Mechanism::Ankle(part),
-                    ..
-                } => match part.axis_frame() {
-                    Some((_, _, AnklePart::Rotor)) => spin(),
-                    Some((_, _, _)) => slide(),
-                    None => continue,
-                },
-                JointModel::Coupled {
-                    mechanism: Mechanism::Knee(part),
-                    inputs,
-                } if part.part != KneePart::Housing => {
-                    // Riders of the housing: rotor and nut frames are the housing's, spun
+            let JointModel::Coupled { mechanism, inputs } = &body.joint_model else {
+                continue;
+            };
+            let (column, kind) = match mechanism.axial_role() {
+                AxialRole::Geared(column) if body.v_set.len() == 1 => (column, AxialKind::Geared),
+                AxialRole::Spins => spin(),
+                AxialRole::Slides => slide(),
+                AxialRole::Rides { slides } => {
+                    // Riders of a carrier part: their frames are the carrier's, spun about
                     // or moved along its z axis.
-                    carrier = knee_housing(model, sub, part, inputs, leaf);
+                    carrier = drive_carrier(model, sub, mechanism, inputs, leaf);
                     frame = SpatialTransform::identity();
-                    match (part.part, carrier) {
+                    match (slides, carrier) {
                         (_, None) => continue,
-                        (KneePart::Rotor, _) => spin(),
-                        _ => slide(),
+                        (false, _) => spin(),
+                        (true, _) => slide(),
                     }
                 }
                 _ => continue,
@@ -331,22 +320,22 @@ pub(crate) fn axial_members(
     out
 }
 
-/// The rigid leaf housing of the same knee drive and inputs in sub-system `sub`, the carrier
-/// of that drive's rotor and nut.
-fn knee_housing(
+/// The rigid leaf member of sub-system `sub` that carries the riders of `part`'s drive
+/// ([`AxialRole::Carries`], the same drive and inputs).
+fn drive_carrier(
     model: &Model,
     sub: &Subsystem,
-    part: &KneeCoupling,
+    part: &Mechanism,
     inputs: &[usize],
     leaf: impl Fn(usize) -> bool,
 ) -> Option<usize> {
     let mut members = sub.members.iter().zip(&sub.rigid_member);
     members.find_map(|(&h, &rigid)| match &model.bodies[h].joint_model {
         JointModel::Coupled {
-            mechanism: Mechanism::Knee(hp),
+            mechanism,
             inputs: hin,
-        } if hp.part == KneePart::Housing
-            && hp.drive == part.drive
+        } if mechanism.axial_role() == AxialRole::Carries
+            && mechanism.same_drive(part)
             && hin.as_slice() == inputs
             && rigid
             && leaf(h) =>
@@ -386,14 +375,6 @@ pub(crate) fn carriers(model: &Model, axial: &[Option<AxialMember>]) -> Vec<Opti
         carried.axisymmetric &= is_axisymmetric(&b.com(), &b.inertia_about_com());
     }
     out
-}
-
-/// The rotor's Jacobian column `[0, 0, N, 0, 0, 0]` (3.1) in its own frame.
-pub(crate) fn rotor_column(rotor: &HarmonicDriveRotor) -> Motion {
-    Motion::new(
-        Vector3::new(0.0, 0.0, rotor.params().ratio),
-        Vector3::zeros(),
-    )
 }
 
 /// `C^T M C` at spin angle zero if `M` is axisymmetric about the body z axis (to rounding).
@@ -503,7 +484,7 @@ mod tests {
     /// which carries them with its inertia plus the rotor's as the constant base.
     #[test]
     fn knee_parts_ride_on_the_housing() {
-        use crate::mechanism::knee::{KneeDrive, KneeDriveParams};
+        use crate::mechanism::knee::{KneeDrive, KneeDriveParams, KneePart};
         use crate::model::{BodySpec, ModelBuilder};
         let drive = KneeDrive::new(KneeDriveParams::default()).expect("drive");
         let ic = Matrix3::from_diagonal(&Vector3::new(4e-5, 4e-5, 2e-5));
