@@ -192,7 +192,7 @@ fn walk_all(
             tables::trajectory_table(&run)?,
         )?;
         let recording = tables::recording_table(&run, &robot.model)?;
-        keep_recording(tables, dir, format!("{m}_recording"), recording)?;
+        keep(tables, dir, format!("{m}_recording"), recording)?;
         summary.insert(m.name().to_string(), serde_json::to_value(&run.summary)?);
         runs.push(run);
     }
@@ -215,7 +215,7 @@ fn walk_all(
     }
     keep(tables, dir, "dynamic".into(), table)?;
     let recording = tables::dynamic_recording(&run)?;
-    keep_recording(tables, dir, "dynamic_recording".into(), recording)?;
+    keep(tables, dir, "dynamic_recording".into(), recording)?;
     summary.insert("dynamic".into(), serde_json::to_value(run.summary)?);
     Ok((runs, Some((method, run))))
 }
@@ -243,29 +243,20 @@ fn verdict_error(s: &DynamicWalkSummary) -> String {
     )
 }
 
-/// Writes `table` as `dir/STEM.csv` (if writing) and keeps it under `stem`.
+/// Writes `table` as `dir/STEM.csv` (if writing) and keeps it under `stem`; a stem ending in
+/// `_recording` is a recording for replay, written gzip-compressed as `dir/STEM.csv.gz`.
 fn keep(
     tables: &mut Vec<(String, Recorder)>,
     dir: Option<&Path>,
     stem: String,
     table: Recorder,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    if let Some(dir) = dir {
-        table.write_csv(&dir.join(format!("{stem}.csv")))?;
-    }
-    tables.push((stem, table));
-    Ok(())
-}
-
-/// Writes the recording `table` as `dir/STEM.csv.gz` (if writing) and keeps it under `stem`.
-fn keep_recording(
-    tables: &mut Vec<(String, Recorder)>,
-    dir: Option<&Path>,
-    stem: String,
-    table: Recorder,
-) -> Result<(), Box<dyn std::error::Error>> {
-    if let Some(dir) = dir {
-        write_csv_gz(&table, &dir.join(format!("{stem}.csv.gz")))?;
+    match dir {
+        Some(dir) if stem.ends_with("_recording") => {
+            write_csv_gz(&table, &dir.join(format!("{stem}.csv.gz")))?
+        }
+        Some(dir) => table.write_csv(&dir.join(format!("{stem}.csv")))?,
+        None => {}
     }
     tables.push((stem, table));
     Ok(())
