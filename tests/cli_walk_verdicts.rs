@@ -109,3 +109,57 @@ fn feasible_walk_keeps_every_verdict_and_writes_its_trajectory() {
     assert_eq!(csv.lines().count(), rows + 1);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The dynamic walk's contact verdict: 4 steps of 0.5 m hop at the step changes (both feet
+/// off the ground for tens of ms); the run exits 1 with one line naming the phase, its length
+/// and time as `summary.json` has them, and `--allow-violations` accepts it.
+#[test]
+fn a_hopping_dynamic_walk_violates_contact() {
+    let dir = std::env::temp_dir().join(format!("biped_verdict_hop_{}", std::process::id()));
+    let args = [
+        "walk",
+        "--steps",
+        "4",
+        "--step-length",
+        "0.5",
+        "--method",
+        "compensation",
+        "--dynamic",
+    ];
+    let run = |extra: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_biped"))
+            .args(args)
+            .arg("--out")
+            .arg(&dir)
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let out = run(&[]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{err}");
+    let s = summary(&dir);
+    let d = &s["dynamic"];
+    assert_eq!(d["contact_kept"], false, "{d}");
+    let (longest, at) = (
+        d["longest_flight"].as_f64().unwrap(),
+        d["longest_flight_at"].as_f64().unwrap(),
+    );
+    assert!(longest > 0.02, "{d}");
+    let line = format!(
+        "dynamic walk: contact: both feet off the ground for {longest:.3} s from t = {at:.3} s"
+    );
+    assert!(err.contains(&line), "`{line}` missing in: {err}");
+    let listed = s["violations"].as_array().unwrap();
+    assert!(
+        listed
+            .iter()
+            .any(|v| v.as_str().unwrap().starts_with(&line)),
+        "{listed:?}"
+    );
+    let out = run(&["--allow-violations"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(err.contains("warning: dynamic walk: contact"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}

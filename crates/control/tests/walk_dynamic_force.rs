@@ -80,6 +80,7 @@ fn the_force_control_keeps_a_foot_on_the_ground() {
     };
     let without = run_dynamic_walk(&without).unwrap().summary;
     assert!(without.longest_flight > 0.02, "{without:?}");
+    assert!(!without.contact_kept, "{without:?}");
     assert!(
         without.flight_time > 5.0 * with.flight_time.max(1e-3),
         "{without:?}"

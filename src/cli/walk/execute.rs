@@ -115,7 +115,9 @@ pub fn execute(args: &WalkArgs, write: bool) -> Result<Walk, String> {
     };
     let dynamic_summary = dynamic.as_ref().map(|(_, r)| &r.summary);
     let mut lines = report::violation_lines(&runs);
-    lines.extend(dynamic_summary.and_then(dynamic_violation));
+    lines.extend(dynamic_summary.map_or(Vec::new(), |s| {
+        dynamic_violations(s, DynamicWalkParams::default().max_flight)
+    }));
     summary.insert("violations".into(), lines.clone().into());
     outdir::stamp(&mut summary, Status::Completed);
     let summary = Value::Object(summary);
@@ -220,14 +222,22 @@ fn walk_all(
     Ok((runs, Some((method, run))))
 }
 
-/// The dynamic walk's friction violation, if a foot slipped.
-fn dynamic_violation(s: &DynamicWalkSummary) -> Option<String> {
-    s.slip_at.map(|t| {
+/// The dynamic walk's violations: a foot that slipped (friction), a hop (contact).
+fn dynamic_violations(s: &DynamicWalkSummary, max_flight: f64) -> Vec<String> {
+    let slip = s.slip_at.map(|t| {
         format!(
             "dynamic walk: friction: a foot slid {:.1} mm within one contact by t = {t:.3} s",
             1e3 * s.max_slip_distance
         )
-    })
+    });
+    let hop = s.longest_flight_at.filter(|_| !s.contact_kept).map(|t| {
+        format!(
+            "dynamic walk: contact: both feet off the ground for {:.3} s from t = {t:.3} s \
+             (a hop: longer than {max_flight:.3} s)",
+            s.longest_flight
+        )
+    });
+    slip.into_iter().chain(hop).collect()
 }
 
 /// One-line error of a failed dynamic walk.

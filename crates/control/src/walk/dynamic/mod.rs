@@ -104,6 +104,10 @@ pub struct DynamicWalkParams {
     pub max_tilt: f64,
     /// Required forward progress as a fraction of the planned base travel.
     pub min_progress: f64,
+    /// Longest phase with both feet off the ground that still counts as walking \[s]: a
+    /// longer one is a hop, the contact verdict's violation (contact chatter at a step change
+    /// lasts a few ms).
+    pub max_flight: f64,
 }
 
 impl Default for DynamicWalkParams {
@@ -128,6 +132,7 @@ impl Default for DynamicWalkParams {
             fall_drop: 0.25,
             max_tilt: 0.3,
             min_progress: 0.8,
+            max_flight: 0.02,
         }
     }
 }
@@ -170,6 +175,9 @@ impl DynamicWalkParams {
                 "criteria",
                 "hold_time >= 0, fall_drop and max_tilt > 0, finite",
             );
+        }
+        if !nonneg(self.max_flight) {
+            return bad("max_flight", "must be finite and >= 0");
         }
         if !nonneg(self.min_progress) {
             return bad("min_progress", "must be finite and >= 0");

@@ -125,6 +125,10 @@ pub struct DynamicWalkSummary {
     pub peak_ground_force: f64,
     /// Mean total vertical ground force (the weight, over a whole walk) \[N].
     pub mean_ground_force: f64,
+    /// No phase with both feet off the ground lasted longer than
+    /// [`DynamicWalkParams::max_flight`] (the robot walked, it did not hop); independent of
+    /// `walked`.
+    pub contact_kept: bool,
 }
 
 impl DynamicWalkSummary {
@@ -201,6 +205,7 @@ impl DynamicWalkSummary {
             longest_flight_at: flight.longest_at,
             peak_ground_force: flight.peak_force,
             mean_ground_force: flight.mean_force,
+            contact_kept: flight.longest <= p.max_flight,
         }
     }
 }
