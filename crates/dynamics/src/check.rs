@@ -80,7 +80,7 @@ fn first_non_finite_wrench(fs: &[Wrench]) -> Option<usize> {
 /// finite, else [`DynamicsError::NotPositiveDefinite`] at velocity index `index`: one integer
 /// comparison of the bits less one (positive finite doubles are exactly the patterns
 /// `1..INFINITY`; zero wraps around, negatives and NaNs lie above), where the two float
-/// comparisons compiled to a classification of ~15 instructions.
+/// comparisons compile to a classification of the value.
 #[inline(always)]
 pub(crate) fn positive_pivot(index: usize, d: f64) -> Result<(), DynamicsError> {
     if d.to_bits().wrapping_sub(1) < f64::INFINITY.to_bits() - 1 {

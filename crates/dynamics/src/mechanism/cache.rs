@@ -19,9 +19,8 @@ pub fn instance_id() -> u64 {
 pub const LOOP_SLOTS: usize = 4;
 
 /// Round-robin store of `(key, closed loop)` pairs; lookups try the most recent entry first.
-/// Loops are solved into their slot in place ([`Self::store_with`]): a closed loop is ~20
-/// floats, and moving one into the store cost a `memmove` call per closure (~2 % of a
-/// simulation cycle, perf).
+/// Loops are solved into their slot in place ([`Self::store_with`]): a closed loop is about 20
+/// floats, and moving one into the store would be a `memmove` call per closure.
 #[derive(Debug, Clone, Copy)]
 pub struct LoopSlots<K: Copy, L: Copy> {
     keys: [Option<K>; LOOP_SLOTS],

@@ -115,7 +115,7 @@ pub(crate) fn backward(data: &mut Data, s: usize, tau: &DVector<f64>) -> Result<
     };
     let (link, ax, vi) = (lr.link, &lr.axis, lr.v_index);
     // The rotors' loads s . h; their forces are in the parent's f-bar (`Data::force_inertia`).
-    // Slice indexing: one comparison (DVector's (row, column) index costs ~9 instructions).
+    // Slice indexing: one bounds comparison, where DVector's (row, column) index checks both.
     let mut rhs = tau.as_slice()[vi];
     for j in lr.rotors.iter().take(lr.nrotors) {
         rhs -= data.axial_load[*j];

@@ -54,7 +54,7 @@ pub(crate) fn hat_kinematics(model: &Model, data: &mut Data, s: usize) {
 
 /// [`hat_kinematics`] for sub-systems of at most `N` coordinates. Each column of `J-hat_j` is
 /// summed in registers and stored once (accumulating in a stack array and copying it over
-/// stalled on store forwarding: ~20 % of the first pass, perf).
+/// stalls on store forwarding).
 #[inline]
 fn hat_kinematics_n<const N: usize>(model: &Model, data: &mut Data, s: usize) {
     let sub = &model.subsystems[s];

@@ -258,8 +258,8 @@ impl Actuator {
     }
 
     /// [`Self::motor_row_cached`] written into `row`: a rotor row that is already there only
-    /// gets its coefficients replaced (no temporary row: moving one into place stalled on
-    /// store forwarding in the plant's right-hand side, perf).
+    /// gets its coefficients replaced (no temporary row: moving one into place stalls on store
+    /// forwarding in the plant's right-hand side).
     #[inline]
     pub fn refresh_motor_row(
         &self,
@@ -352,8 +352,8 @@ impl Actuator {
 
     /// Adds the motor-row forces of `hold` (drive torque less friction at the motor speed
     /// `row v`; nothing without a row) to `gen`, returns the motor-side state. The direct force
-    /// of `hold` is the caller's to add. Inlined into the plant's loop over the drives (a call
-    /// per drive cost a fifth of its instructions, callgrind).
+    /// of `hold` is the caller's to add. Inlined into the plant's loop over the drives, whose
+    /// per-drive work is small next to a call.
     #[inline(always)]
     pub fn forces(
         &self,

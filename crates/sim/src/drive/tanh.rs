@@ -1,7 +1,7 @@
 //! `tanh` for the smoothed Coulomb friction `tanh(omega / omega_eps)`, evaluated 24 times per
 //! right-hand side: a rational function near zero (where a standing robot's joints are) and
 //! `exp` beyond, within a few ulp of the C library's `tanh` and without its `expm1` call (the
-//! libm pair was ~3.7 % of a `stand` cycle, perf).
+//! C library's pair is a measurable share of a `stand` cycle, see BENCHMARKS.md).
 //!
 //! For `|x| <= 0.625`: Lambert's continued fraction `tanh x = x / (1 + x^2 / (3 + x^2 / (5 +
 //! ...)))` truncated after `15`, i.e. the Padé approximant `x P(x^2) / Q(x^2)` with integer

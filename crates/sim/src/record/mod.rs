@@ -7,10 +7,10 @@
 //! registered up front or on first set; a vector signal `q` of length `n` expands to columns
 //! `q[0]`..`q[n-1]`. A column registered after earlier rows, or not set in a row, holds NaN
 //! there (written as `NaN` in the CSV), so missing data stays visible. Storage is one
-//! row-major buffer with amortised growth (a sample writes one contiguous row: with one `Vec`
-//! per column, the 135 interleaved write streams of a simulation's row cost ~2 % of its cycle
-//! in cache misses); setting by id or by an existing name does not allocate, and registering a
-//! column after rows exist re-lays the buffer once.
+//! row-major buffer with amortised growth (a sample writes one contiguous row rather than one
+//! value into each of a simulation's 135 column streams, which misses the cache); setting by id
+//! or by an existing name does not allocate, and registering a column after rows exist re-lays
+//! the buffer once.
 
 mod error;
 pub mod plot;
@@ -148,9 +148,8 @@ impl Recorder {
 
     /// Allocates the rows reserved by [`Self::with_capacity`] for the columns registered so far
     /// and writes them once, so that the operating system maps the memory now rather than on
-    /// first use inside a timed or real-time loop (one page fault per 4 KiB otherwise: ~2 % of
-    /// a recorded Lola `stand` cycle, perf). Recorded values are unaffected; call it after
-    /// registering the signals.
+    /// first use inside a timed or real-time loop (one page fault per 4 KiB otherwise).
+    /// Recorded values are unaffected; call it after registering the signals.
     pub fn prefault(&mut self) {
         touch(&mut self.rows, self.capacity * self.names.len());
         touch(&mut self.time, self.capacity);

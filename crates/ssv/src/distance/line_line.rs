@@ -132,7 +132,7 @@ pub fn ll(a: &Lss, b: &Lss) -> DistanceResult {
     // r is a positive normal number at most 2^1022 exactly when the product is a positive
     // normal number; the non-short-circuit `&` avoids a separate branch per test.
     let r = 1.0 / (uuvv * n);
-    // Plain compares: `RangeInclusive::contains` costs three more instructions here.
+    // Plain compares: `RangeInclusive::contains` adds work here.
     #[allow(clippy::manual_range_contains)]
     let fast = (n > WELL_CONDITIONED * uuvv) & (r >= f64::MIN_POSITIVE) & (r <= MAX_RECIP);
     let (s, t) = if fast {
