@@ -12,44 +12,7 @@ use biped_dynamics::{
 };
 use loop_support::*;
 use nalgebra::{DVector, Isometry3, Matrix3, Vector3, Vector6};
-use rand::rngs::StdRng;
 use rand::Rng;
-
-/// A Grashof crank-rocker: the crank turns fully, no dead centre.
-fn four_bar(elbow: f64) -> FourBar {
-    FourBar {
-        crank: 0.05,
-        coupler: 0.2,
-        rocker: 0.15,
-        ground: 0.2,
-        elbow,
-    }
-}
-
-/// Random coupled leaf: geared rotor, linear gear over 1-3 inputs, or four-bar coupler.
-fn random_coupling(rng: &mut StdRng, inputs: &[usize]) -> Option<JointModel> {
-    Some(match rng.random_range(0..3) {
-        0 => JointModel::GearedRotor {
-            axis: random_axis(rng),
-            ratio: rng.random_range(-50.0..50.0),
-            driver: inputs[0],
-        },
-        1 => JointModel::Coupled {
-            mechanism: Mechanism::Linear(LinearCoupling {
-                axis: random_axis(rng),
-                ratios: inputs
-                    .iter()
-                    .map(|_| rng.random_range(-20.0..20.0))
-                    .collect(),
-            }),
-            inputs: inputs.to_vec(),
-        },
-        _ => JointModel::Coupled {
-            mechanism: Mechanism::FourBar(four_bar(if rng.random_bool(0.5) { 1.0 } else { -1.0 })),
-            inputs: vec![inputs[0]],
-        },
-    })
-}
 
 /// Pose, Jacobian and bias of a mechanism against central differences along `q + qd t`.
 fn check_mechanism(m: &Mechanism, q: &[f64], qd: &[f64]) {

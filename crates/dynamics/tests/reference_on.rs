@@ -11,14 +11,12 @@ mod reference_support;
 mod loop_support;
 
 use biped_dynamics::dynamics::reference::kinds::{fast_member_kinds, MemberKind};
-use biped_dynamics::model::{FourBar, LinearCoupling, Mechanism};
 use biped_dynamics::urdf::{load_file, UrdfOptions};
 use biped_dynamics::{dill::dill, Force, JointModel, Model, RotorSpec, Wrench};
-use core_support::{random_axis, random_model, random_q, random_vec, rng, TreeOptions};
+use core_support::{random_model, random_q, random_vec, rng, TreeOptions};
 use nalgebra::{DVector, Vector3};
 use proptest::prelude::*;
 use rand::rngs::StdRng;
-use rand::Rng;
 use reference_support::deviation;
 use std::collections::BTreeSet;
 
@@ -55,42 +53,6 @@ fn check(model: &Model, seed: u64, n: usize) -> f64 {
         worst = worst.max(deviation(model, &q, &v, &tau, fext));
     }
     worst
-}
-
-/// A Grashof crank-rocker coupler (no dead centre).
-fn four_bar(elbow: f64) -> FourBar {
-    FourBar {
-        crank: 0.05,
-        coupler: 0.2,
-        rocker: 0.15,
-        ground: 0.2,
-        elbow,
-    }
-}
-
-/// Random drive-train leaf: geared rotor, linear gear over 1-3 inputs, or four-bar coupler.
-fn coupling(rng: &mut StdRng, inputs: &[usize]) -> Option<JointModel> {
-    Some(match rng.random_range(0..3) {
-        0 => JointModel::GearedRotor {
-            axis: random_axis(rng),
-            ratio: rng.random_range(-50.0..50.0),
-            driver: inputs[0],
-        },
-        1 => JointModel::Coupled {
-            mechanism: Mechanism::Linear(LinearCoupling {
-                axis: random_axis(rng),
-                ratios: inputs
-                    .iter()
-                    .map(|_| rng.random_range(-20.0..20.0))
-                    .collect(),
-            }),
-            inputs: inputs.to_vec(),
-        },
-        _ => JointModel::Coupled {
-            mechanism: Mechanism::FourBar(four_bar(if rng.random_bool(0.5) { 1.0 } else { -1.0 })),
-            inputs: vec![inputs[0]],
-        },
-    })
 }
 
 /// The G1 URDF, floating or fixed, optionally with a motor rotor on every revolute joint.
@@ -136,7 +98,7 @@ proptest! {
 
     #[test]
     fn loop_subsystems_match_the_fast_paths(seed in any::<u64>(), n in 3usize..24) {
-        let model = loop_support::random_loop_model(seed, n, seed % 2 == 0, coupling);
+        let model = loop_support::random_loop_model(seed, n, seed % 2 == 0, loop_support::random_coupling);
         let dev = check(&model, seed ^ 2, 2);
         prop_assert!(dev < TOL, "loops {n}, {} sub-systems: {dev:e}", model.subsystems().len());
     }
@@ -158,8 +120,12 @@ proptest! {
 fn member_kinds_covered() {
     let mut kinds = BTreeSet::new();
     for seed in 0..40 {
-        let model =
-            loop_support::random_loop_model(seed, 4 + seed as usize % 20, seed % 2 == 0, coupling);
+        let model = loop_support::random_loop_model(
+            seed,
+            4 + seed as usize % 20,
+            seed % 2 == 0,
+            loop_support::random_coupling,
+        );
         kinds.extend(fast_member_kinds(&model).into_iter().map(|(_, k)| k));
     }
     kinds.extend(
@@ -195,7 +161,12 @@ fn largest_deviations() {
             seed,
             2,
         ));
-        let model = loop_support::random_loop_model(seed, n + 2, seed % 2 == 0, coupling);
+        let model = loop_support::random_loop_model(
+            seed,
+            n + 2,
+            seed % 2 == 0,
+            loop_support::random_coupling,
+        );
         subsystems += model.subsystems().len();
         loop_dev = loop_dev.max(check(&model, seed, 2));
     }

@@ -9,6 +9,7 @@ pub use core_support::{
     add_named, random_axis, random_inertia, random_pose, random_q, random_vec, rel_diff, rng,
 };
 
+use biped_dynamics::model::{FourBar, LinearCoupling, Mechanism};
 use biped_dynamics::{
     forward_dynamics, Algorithm, BodySpec, Data, JointModel, Model, ModelBuilder, RigidInertia,
     Wrench,
@@ -195,5 +196,41 @@ pub fn rotor(rng: &mut StdRng, inputs: &[usize]) -> Option<JointModel> {
         axis: random_axis(rng),
         ratio: rng.random_range(-100.0..100.0),
         driver: inputs[0],
+    })
+}
+
+/// A Grashof crank-rocker: the crank turns fully, no dead centre.
+pub fn four_bar(elbow: f64) -> FourBar {
+    FourBar {
+        crank: 0.05,
+        coupler: 0.2,
+        rocker: 0.15,
+        ground: 0.2,
+        elbow,
+    }
+}
+
+/// Random coupled leaf: geared rotor, linear gear over 1-3 inputs, or four-bar coupler.
+pub fn random_coupling(rng: &mut StdRng, inputs: &[usize]) -> Option<JointModel> {
+    Some(match rng.random_range(0..3) {
+        0 => JointModel::GearedRotor {
+            axis: random_axis(rng),
+            ratio: rng.random_range(-50.0..50.0),
+            driver: inputs[0],
+        },
+        1 => JointModel::Coupled {
+            mechanism: Mechanism::Linear(LinearCoupling {
+                axis: random_axis(rng),
+                ratios: inputs
+                    .iter()
+                    .map(|_| rng.random_range(-20.0..20.0))
+                    .collect(),
+            }),
+            inputs: inputs.to_vec(),
+        },
+        _ => JointModel::Coupled {
+            mechanism: Mechanism::FourBar(four_bar(if rng.random_bool(0.5) { 1.0 } else { -1.0 })),
+            inputs: vec![inputs[0]],
+        },
     })
 }
