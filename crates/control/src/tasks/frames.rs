@@ -6,7 +6,6 @@ use super::task::Frame;
 use crate::error::IkError;
 use biped_dynamics::Model;
 use biped_robots::lola::LolaModel;
-use nalgebra::Vector3;
 
 /// Task of each joint slot of [`WalkTaskFrames::joints`].
 pub(crate) const JOINT_TASKS: [TaskId; 7] = [
@@ -92,25 +91,4 @@ impl WalkTaskFrames {
         }
         Ok(())
     }
-}
-
-/// Bodies of the subtree of `root` with their CoM (body frame) and mass (massless skipped).
-pub(crate) fn arm_bodies(model: &Model, root: usize) -> Vec<(usize, Vector3<f64>, f64)> {
-    let in_subtree = |mut b: usize| loop {
-        if b == root {
-            return true;
-        }
-        match model.bodies()[b].parent() {
-            Some(p) => b = p,
-            None => return false,
-        }
-    };
-    (0..model.nbodies())
-        .filter(|&b| in_subtree(b))
-        .map(|b| {
-            let i = model.bodies()[b].inertia();
-            (b, i.com(), i.mass())
-        })
-        .filter(|a| a.2 > 0.0)
-        .collect()
 }

@@ -2,11 +2,13 @@
 //! (Table 4.2) with switchable, blended tasks (5.1).
 //!
 //! [`TaskStack`] stacks generic [`Task`]s (frame pose / position / orientation, relative
-//! frame, CoM, posture, joint, angular momentum; see [`task`]) on any
+//! frame, offset of a frame, the CoM or a subtree's CoM from another such point, CoM,
+//! posture, joint, angular momentum; see [`task`]) on any
 //! [`biped_dynamics::Model`] and implements [`crate::ik::TaskMap`]; [`crate::ik::Ik`] builds
 //! one from URDF names with the joint limits on.
 //!
-//! [`LolaTasks`] stacks the active tasks of [`TaskId`] (Table 4.2 plus joint tasks for the
+//! [`LolaTasks`] is one configuration of a [`TaskStack`]: it stacks the active tasks of
+//! [`TaskId`] (Table 4.2 plus joint tasks for the
 //! head pan/tilt and camera vergence, so that all tasks together are non-redundant:
 //! 31 rows for 31 DoF) and implements [`crate::ik::TaskMap`]. Targets are a
 //! [`LolaTargets`] struct. The bodies and joints it acts on are a [`WalkTaskFrames`]: Lola's,
@@ -29,4 +31,4 @@ pub use lola::LolaTasks;
 pub use pose::{lola_joint_cost, standing_configuration};
 pub use stack::{TaskHandle, TaskStack};
 pub use targets::{FootFrame, LolaTargets, TaskId};
-pub use task::{Frame, MomentumAxes, Task, TaskKind};
+pub use task::{Frame, MomentumAxes, Point, Task, TaskKind};

@@ -11,6 +11,9 @@
 //!   body that coincides with `p` (since `xdot = A_r^T (pdot - pdot_r - w_r x (p - p_r))`);
 //! - relative orientation: `R = A_r^T A`, error `log(R_d R^T)` in reference axes,
 //!   `J = A_r^T (J_w - J_w,r)` (since `dR/dt = [A_r^T (w - w_r)]x R`);
+//! - offset of one point from another in fixed axes `A` (a frame origin, the CoM or the CoM
+//!   of a subtree, e.g. a foot from the CoM in a yawed planning frame): `x = A^T (p - p_from)`,
+//!   `J = A^T (J_p - J_from)`; a subtree CoM has `J = sum m_b J_p(b, c_b) / sum m_b`;
 //! - centre of mass: `J = J_C`;
 //! - posture: every joint with a range towards a configuration, `J = E` on those columns;
 //! - joint: one coordinate, `J = e_i^T`;
@@ -35,6 +38,24 @@ impl Frame {
             body,
             offset: Isometry3::identity(),
         }
+    }
+}
+
+/// A point that a task can follow.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Point {
+    /// The origin of a frame.
+    Frame(Frame),
+    /// The centre of mass of the whole model.
+    Com,
+    /// The centre of mass of the subtree rooted at this body (the body included).
+    SubtreeCom(usize),
+}
+
+impl Point {
+    /// Whether following the point needs the centroidal quantities.
+    fn is_com(&self) -> bool {
+        matches!(self, Point::Com)
     }
 }
 
@@ -89,6 +110,18 @@ pub enum TaskKind {
         /// Target relative orientation.
         target: Matrix3<f64>,
     },
+    /// Offset of `point` from `from` in the fixed axes `axes` (columns: the axes in world
+    /// coordinates): `x = axes^T (p - p_from)`.
+    Offset {
+        /// The point that moves.
+        point: Point,
+        /// The point it is measured from.
+        from: Point,
+        /// The axes of the offset (e.g. a planning frame yawed about the vertical).
+        axes: Matrix3<f64>,
+        /// Target offset in `axes` \[m].
+        target: Vector3<f64>,
+    },
     /// Centre of mass of the whole model (world).
     Com {
         /// Target CoM \[m].
@@ -136,10 +169,11 @@ impl TaskKind {
 
     /// Whether evaluating the task needs the centroidal quantities (CoM, `A_G`).
     pub fn needs_centroidal(&self) -> bool {
-        matches!(
-            self,
-            TaskKind::Com { .. } | TaskKind::AngularMomentum { .. }
-        )
+        match self {
+            TaskKind::Com { .. } | TaskKind::AngularMomentum { .. } => true,
+            TaskKind::Offset { point, from, .. } => point.is_com() || from.is_com(),
+            _ => false,
+        }
     }
 }
 
@@ -154,6 +188,8 @@ pub struct Task {
     pub weight: Option<f64>,
     /// Feed-forward task velocity `xd_d` of the first rows (up to 6; posture rows get 0).
     pub velocity: [f64; 6],
+    /// Whether the task is stacked (an inactive task keeps its place but has no rows).
+    pub active: bool,
 }
 
 impl Task {
@@ -163,6 +199,7 @@ impl Task {
             kind,
             weight: None,
             velocity: [0.0; 6],
+            active: true,
         }
     }
 

@@ -232,6 +232,7 @@ impl WalkController {
         self.tasks.advance(dt);
         self.q_eval.copy_from(&self.q);
         self.buf.evaluate(&mut self.tasks, &self.q)?;
+        self.sns.set_unit_rows(self.tasks.unit_rows())?;
         self.cost.gradient_into(&self.q, &mut self.grad)?;
         let scale = match self.method {
             Method::Minimization => self.params.minimization_delta,

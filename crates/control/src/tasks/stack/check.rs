@@ -2,7 +2,7 @@
 
 use super::TaskStack;
 use crate::error::IkError;
-use crate::tasks::task::{Frame, Task, TaskKind};
+use crate::tasks::task::{Frame, Point, Task, TaskKind};
 
 impl TaskStack {
     /// Errors on body, q or v indices outside the model, a posture target of the wrong length
@@ -14,6 +14,11 @@ impl TaskStack {
         }
         let (nb, nq, nv) = (self.model.nbodies(), self.model.nq(), self.model.nv());
         let frame_ok = |f: &Frame| f.body < nb;
+        let point_ok = |p: &Point| match p {
+            Point::Frame(f) => frame_ok(f),
+            Point::Com => true,
+            Point::SubtreeCom(b) => *b < nb,
+        };
         let ok = match &task.kind {
             TaskKind::Position { frame, .. }
             | TaskKind::Orientation { frame, .. }
@@ -24,6 +29,9 @@ impl TaskStack {
             | TaskKind::RelativeOrientation {
                 frame, reference, ..
             } => frame_ok(frame) && frame_ok(reference),
+            TaskKind::Offset {
+                point, from, axes, ..
+            } => point_ok(point) && point_ok(from) && axes.iter().all(|a| a.is_finite()),
             TaskKind::Posture { joints, target } => {
                 target.len() == nq && joints.iter().all(|&(qi, vi)| qi < nq && vi < nv)
             }

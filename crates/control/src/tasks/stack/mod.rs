@@ -8,6 +8,7 @@
 
 mod check;
 mod frames;
+mod offset;
 mod unit;
 
 use super::rows::{com_jacobian_from_ag, put_rows};
@@ -16,6 +17,7 @@ use crate::error::IkError;
 use crate::ik::TaskMap;
 use biped_dynamics::{Centroidal, Data, JacobianError, Jacobians, Model};
 use nalgebra::{DMatrix, DVector, Matrix3};
+use offset::Subtree;
 use unit::{is_unit, push_columns};
 
 /// Index of a task in its [`TaskStack`].
@@ -38,6 +40,8 @@ pub struct TaskStack {
     j3r: DMatrix<f64>,
     j6: DMatrix<f64>,
     j6r: DMatrix<f64>,
+    jt: DMatrix<f64>,
+    subtrees: Vec<Subtree>,
     soft: Vec<f64>,
     ff: DVector<f64>,
     /// Columns of the trailing unit rows of the last evaluation.
@@ -64,6 +68,8 @@ impl TaskStack {
             j3r: DMatrix::zeros(3, nv),
             j6: DMatrix::zeros(6, nv),
             j6r: DMatrix::zeros(6, nv),
+            jt: DMatrix::zeros(3, nv),
+            subtrees: Vec::new(),
             soft: Vec::new(),
             ff: DVector::zeros(0),
             unit: Vec::new(),
@@ -100,6 +106,9 @@ impl TaskStack {
     /// Appends `task` after checking its indices and weight against the model.
     pub fn push(&mut self, task: Task) -> Result<TaskHandle, IkError> {
         self.check(&task)?;
+        if let TaskKind::Offset { point, from, .. } = &task.kind {
+            self.cache_subtrees(&[*point, *from])?;
+        }
         self.rows += task.kind.dim();
         self.tasks.push(task);
         self.soft.resize(self.rows, 0.0);
@@ -149,6 +158,15 @@ impl TaskStack {
             } => {
                 let (frame, reference, target) = (*frame, *reference, *target);
                 self.write_relative_orientation(&frame, &reference, &target, r, err, out)?;
+            }
+            TaskKind::Offset {
+                point,
+                from,
+                axes,
+                target,
+            } => {
+                let (points, axes, target) = ((*point, *from), *axes, *target);
+                self.write_offset((&points.0, &points.1), &axes, &target, r, err, out)?;
             }
             TaskKind::Com { target } => {
                 put_rows(out, r, &id, &self.jc, 0, None, 0);
@@ -223,7 +241,7 @@ impl TaskMap for TaskStack {
         self.rows
     }
 
-    /// Stacks the tasks in insertion order.
+    /// Stacks the active tasks in insertion order (soft joint-space tasks last).
     fn error_and_jacobian(
         &mut self,
         q: &DVector<f64>,
@@ -255,7 +273,7 @@ impl TaskMap for TaskStack {
         self.unit.clear();
         for unit in [false, true] {
             for k in 0..self.tasks.len() {
-                if is_unit(&self.tasks[k]) != unit {
+                if !self.tasks[k].active || is_unit(&self.tasks[k]) != unit {
                     continue;
                 }
                 self.write_task(k, q, r, err, jac)?;
