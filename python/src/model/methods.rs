@@ -114,7 +114,7 @@ impl PyModel {
     /// Total mass in kg.
     #[getter]
     fn mass(&self) -> f64 {
-        self.model.bodies().iter().map(|b| b.inertia().mass()).sum()
+        self.model.mass()
     }
 
     /// The neutral configuration (zero joint angles, identity quaternions).

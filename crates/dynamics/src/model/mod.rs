@@ -261,6 +261,10 @@ impl Model {
     pub fn nbodies(&self) -> usize {
         self.bodies.len()
     }
+    /// Total mass: the sum of the bodies' masses \[kg].
+    pub fn mass(&self) -> f64 {
+        self.bodies.iter().map(|b| b.inertia().mass()).sum()
+    }
     /// Joints with coordinates, in coordinate order.
     pub fn joints(&self) -> &[JointInfo] {
         &self.joints

@@ -137,12 +137,7 @@ pub(super) fn sway_within_stops(
 
 /// Penetration of every contact point when the weight is shared equally by all points.
 pub(super) fn static_penetration(plant: &Plant) -> f64 {
-    let mass: f64 = plant
-        .model()
-        .bodies()
-        .iter()
-        .map(|b| b.inertia().mass())
-        .sum();
+    let mass = plant.model().mass();
     let n = plant.contact().npoints().max(1) as f64;
     let w = mass * plant.model().gravity().norm();
     plant.contact().params().static_penetration(w / n)

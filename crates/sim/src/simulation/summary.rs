@@ -162,12 +162,7 @@ impl Summary {
     ) -> Self {
         let plant = &sim.plant;
         let l = plant.layout();
-        let mass: f64 = plant
-            .model()
-            .bodies()
-            .iter()
-            .map(|b| b.inertia().mass())
-            .sum();
+        let mass = plant.model().mass();
         let sim_time = sim.t - t0;
         let abs_max = |x: &[f64]| x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let fastest = link_speed(plant, &sim.z[l.v()]);
