@@ -124,6 +124,29 @@ impl PyIk {
             .map_err(err)
     }
 
+    /// A hard task: the offset `axes^T (p - p_from)` of point `point` from point `from_` at
+    /// `target`. Points: `"com"`, `"subtree:LINK"` (the CoM of LINK and every link beyond
+    /// it) or a link's origin; `axes` (3x3, columns: the axes in world) defaults to the
+    /// world axes.
+    #[pyo3(signature = (point, from_, target, axes=None))]
+    fn offset(
+        &mut self,
+        point: &str,
+        from_: &str,
+        target: &Bound<'_, PyAny>,
+        axes: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<usize> {
+        let axes = match axes {
+            Some(a) => rotation(&numbers(a, "axes", &[3, 3])?, "axes")?.into_inner(),
+            None => Matrix3::identity(),
+        };
+        let target = vec3(target, "target")?;
+        self.ik
+            .offset(point, from_, axes, target)
+            .map(|h| h.0)
+            .map_err(err)
+    }
+
     /// A hard task: the centre of mass to the world point `position`.
     fn com(&mut self, position: &Bound<'_, PyAny>) -> PyResult<usize> {
         let target = vec3(position, "position")?;
@@ -148,9 +171,9 @@ impl PyIk {
         let kind = &mut self.ik.task_mut(TaskHandle(task)).map_err(err)?.kind;
         match kind {
             TaskKind::Pose { target: t, .. } => *t = pose(target)?,
-            TaskKind::Position { target: t, .. } | TaskKind::Com { target: t } => {
-                *t = vec3(target, "target")?
-            }
+            TaskKind::Position { target: t, .. }
+            | TaskKind::Com { target: t }
+            | TaskKind::Offset { target: t, .. } => *t = vec3(target, "target")?,
             TaskKind::Orientation { target: t, .. } => {
                 let rows = numbers(target, "target", &[3, 3])?;
                 *t = rotation(&rows, "target")?.into_inner();

@@ -75,6 +75,28 @@ def test_moving_target(g1):
     assert abs(reached[0] - (start[0] + 0.04)) < 2e-3
 
 
+def test_offset_of_a_hand_from_the_com_in_yawed_axes(g1):
+    model, _, _, q = g1
+    ik = biped.Ik(str(G1))
+    c, s = np.cos(0.4), np.sin(0.4)
+    axes = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    hand = "left_rubber_hand"
+
+    def offset(q):
+        return axes.T @ (model.frame_pose(q, hand)[:3, 3] - model.com(q))
+
+    target = offset(q) + [0.03, 0.0, 0.02]
+    for foot in FEET:
+        ik.frame_pose(foot, model.frame_pose(q, foot))
+    task = ik.offset(hand, "com", target, axes=axes)
+    for _ in range(300):
+        q, _ = ik.step(q, 0.01)
+    np.testing.assert_allclose(offset(q), target, atol=1e-5)
+    ik.set_target(task, target + [0.01, 0.0, 0.0])
+    with pytest.raises(biped.BipedError, match="no_such_link"):
+        ik.offset("subtree:no_such_link", "com", target)
+
+
 def test_bad_input():
     ik = biped.Ik(str(G1))
     with pytest.raises(biped.BipedError, match="no_such_link"):

@@ -153,3 +153,37 @@ fn bad_points_are_rejected() {
     }
     assert_eq!(stack.max_rows(), 0);
 }
+
+#[test]
+fn ik_moves_an_arm_com_to_an_offset_from_the_com() {
+    use biped_control::ik::Ik;
+    let robot = &g1().robot;
+    let model = &robot.urdf.model;
+    let mut q = robot.comfort.clone();
+    let arm = Point::SubtreeCom(frame("left_shoulder_pitch_link").body);
+    let yaw = Rotation3::from_axis_angle(&Vector3::z_axis(), 0.3).into_inner();
+    let start = yaw.transpose() * (position(model, &q, &arm) - position(model, &q, &Point::Com));
+    let target = start + Vector3::new(0.04, 0.0, 0.03);
+    let mut ik = Ik::new(&robot.urdf).unwrap();
+    for foot in ["left_ankle_roll_link", "right_ankle_roll_link"] {
+        ik.frame_pose(foot, g1_pose(model, &q, foot)).unwrap();
+    }
+    ik.offset("subtree:left_shoulder_pitch_link", "com", yaw, target)
+        .unwrap();
+    for _ in 0..300 {
+        ik.step(&mut q, 0.01).unwrap();
+    }
+    let reached = yaw.transpose() * (position(model, &q, &arm) - position(model, &q, &Point::Com));
+    assert!(
+        (reached - target).norm() < 1e-5,
+        "{reached:?} vs {target:?}"
+    );
+    assert!(matches!(ik.point("com"), Ok(Point::Com)));
+    assert!(ik.point("subtree:no_such_link").is_err() && ik.point("no_such_link").is_err());
+}
+
+/// World pose of link `name` at `q`.
+fn g1_pose(model: &Model, q: &DVector<f64>, name: &str) -> nalgebra::Isometry3<f64> {
+    let (r, p) = fk(model, q, &frame(name));
+    nalgebra::Isometry3::from_parts(p.into(), nalgebra::UnitQuaternion::from_matrix(&r))
+}

@@ -1,9 +1,9 @@
-//! The task-adding methods of [`Ik`]: frame, relative frame, CoM, posture, joint and vertical
-//! momentum tasks by URDF link and joint names.
+//! The task-adding methods of [`Ik`]: frame, relative frame, offset, CoM, posture, joint and
+//! vertical momentum tasks by URDF link and joint names.
 
 use super::Ik;
 use crate::error::IkError;
-use crate::tasks::{MomentumAxes, Task, TaskHandle, TaskKind};
+use crate::tasks::{MomentumAxes, Point, Task, TaskHandle, TaskKind};
 use nalgebra::{DVector, Isometry3, Matrix3, Vector3};
 
 impl Ik {
@@ -67,6 +67,35 @@ impl Ik {
             target,
         };
         self.add(Task::hard(kind))
+    }
+
+    /// The point named `name`: `"com"` (the centre of mass), `"subtree:LINK"` (the centre of
+    /// mass of LINK's body and every body beyond it) or link `name`'s origin.
+    pub fn point(&self, name: &str) -> Result<Point, IkError> {
+        Ok(match (name, name.strip_prefix("subtree:")) {
+            ("com", _) => Point::Com,
+            (_, Some(link)) => Point::SubtreeCom(self.frame(link)?.body),
+            _ => Point::Frame(self.frame(name)?),
+        })
+    }
+
+    /// Hard task: the offset `axes^T (p - p_from)` of point `point` from point `from` (names
+    /// as in [`Self::point`]) at `target`, in `axes` (columns: the axes in world coordinates,
+    /// e.g. a frame yawed with the robot's heading).
+    pub fn offset(
+        &mut self,
+        point: &str,
+        from: &str,
+        axes: Matrix3<f64>,
+        target: Vector3<f64>,
+    ) -> Result<TaskHandle, IkError> {
+        let (point, from) = (self.point(point)?, self.point(from)?);
+        self.add(Task::hard(TaskKind::Offset {
+            point,
+            from,
+            axes,
+            target,
+        }))
     }
 
     /// Hard task: the centre of mass at `target`.
