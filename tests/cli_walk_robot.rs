@@ -215,8 +215,6 @@ fn one_line_error(args: &[&str]) -> String {
 fn bad_robots_fail_with_one_located_line() {
     let err = one_line_error(&["walk", "--robot", "nosuch"]);
     assert!(err.contains("--robot") && err.contains("nosuch"), "{err}");
-    let err = one_line_error(&["walk", "--robot", "g1", "--dynamic"]);
-    assert!(err.contains("not available yet"), "{err}");
 
     let dir = temp("bad");
     std::fs::create_dir_all(&dir).unwrap();
@@ -237,6 +235,15 @@ fn bad_robots_fail_with_one_located_line() {
     let err = one_line_error(&["walk", "--robot", typo.to_str().unwrap()]);
     assert!(
         err.contains("typo.toml:") && err.contains("left_kne_joint"),
+        "{err}"
+    );
+    let short = dir.join("short_leg.toml");
+    let leg = "\"left_ankle_pitch_joint\", \"left_ankle_roll_joint\"]";
+    assert!(text.contains(leg));
+    std::fs::write(&short, text.replace(leg, "\"left_ankle_pitch_joint\"]")).unwrap();
+    let err = one_line_error(&["walk", "--robot", short.to_str().unwrap(), "--dynamic"]);
+    assert!(
+        err.contains("--robot") && err.contains("short_leg.toml") && err.contains("5 joints"),
         "{err}"
     );
     let start = text.find("[collision]").unwrap();

@@ -63,7 +63,7 @@ pub mod tracking;
 pub use feedforward::Feedforward;
 pub use force::{ForceControl, ForceGains};
 pub use reference::{build_reference, build_robot_reference, JointReference, ReferenceOptions};
-pub use robot::{DynamicRobot, PlantSource, RobotScale};
+pub use robot::{DynamicRobot, PlantSource, RobotScale, FOOT_DAMPING_RATIO, SOLE_ROLL_MARGIN};
 pub use robot_legs::{DynamicLeg, LEG_JOINTS};
 pub use run::{
     robot_plant, run_dynamic_walk, run_dynamic_walk_robot, start_on_ground, DynamicWalkRun,
