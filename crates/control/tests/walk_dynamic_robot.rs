@@ -1,7 +1,8 @@
 //! The dynamic walk of a described robot (the bundled G1): its parts come from the description
 //! (ankle axes as the URDF gives them, the sole's contact law, the plant's end stops at the
 //! URDF ranges), and it walks 10 steps of its natural step length with every arm method without
-//! falling, hopping, slipping or pushing a joint beyond its range.
+//! falling, hopping, slipping, pushing a joint beyond its range or letting segments
+//! interpenetrate.
 
 use biped_control::walk::dynamic::{robot_plant, SOLE_ROLL_MARGIN};
 use biped_control::walk::{
@@ -69,6 +70,8 @@ fn g1_walks_ten_natural_steps_with_every_method() {
         assert!(s.progress > 0.95, "{method}: {s:?}");
         assert!(s.contact_kept && s.friction_kept, "{method}: {s:?}");
         assert!(s.end_stops && s.limit_excess <= 0.0, "{method}: {s:?}");
+        assert!(s.limits_kept && s.min_joint_margin > 0.0, "{method}: {s:?}");
+        assert!(s.collision_free && s.min_distance > 0.0, "{method}: {s:?}");
         assert!(s.max_tilt < 0.05, "{method}: {s:?}");
         let weight = r.weight();
         assert!((s.mean_ground_force / weight - 1.0).abs() < 0.05, "{s:?}");

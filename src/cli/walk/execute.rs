@@ -211,11 +211,12 @@ fn walk_all(
     keep(tables, dir, "dynamic".into(), table)?;
     let recording = tables::dynamic_recording(&run)?;
     keep(tables, dir, "dynamic_recording".into(), recording)?;
-    summary.insert("dynamic".into(), serde_json::to_value(run.summary)?);
+    summary.insert("dynamic".into(), serde_json::to_value(&run.summary)?);
     Ok((runs, Some((method, run))))
 }
 
-/// The dynamic walk's violations: a foot that slipped (friction), a hop (contact).
+/// The dynamic walk's violations: a foot that slipped (friction), a hop (contact), a joint past
+/// its range (limits), interpenetrating segments (self-collision).
 fn dynamic_violations(s: &DynamicWalkSummary, max_flight: f64) -> Vec<String> {
     let slip = s.slip_at.map(|t| {
         format!(
@@ -230,7 +231,23 @@ fn dynamic_violations(s: &DynamicWalkSummary, max_flight: f64) -> Vec<String> {
             s.longest_flight
         )
     });
-    slip.into_iter().chain(hop).collect()
+    let limits = (!s.limits_kept).then(|| {
+        format!(
+            "dynamic walk: joint limits: {} {:.4} rad beyond its range in the simulation",
+            s.min_joint_margin_at, -s.min_joint_margin
+        )
+    });
+    let collision = (!s.collision_free).then(|| {
+        format!(
+            "dynamic walk: self-collision: {} interpenetrate by {:.4} m in the simulation",
+            s.min_distance_at, -s.min_distance
+        )
+    });
+    slip.into_iter()
+        .chain(hop)
+        .chain(limits)
+        .chain(collision)
+        .collect()
 }
 
 /// One-line error of a failed dynamic walk.

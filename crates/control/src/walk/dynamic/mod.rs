@@ -9,6 +9,8 @@
 //! - [`run`]: [`run_dynamic_walk`] on the Lola Type 2 plant (RK4, h = 1 ms), time series and
 //!   the verdict; [`run_dynamic_walk_robot`] on the plant of any [`DynamicRobot`] ([`robot`]:
 //!   the Lola-like model or a robot description, e.g. the G1).
+//! - [`margins`]: the joint-limit margin and SSV distance of the simulated poses (the
+//!   limits and self-collision verdicts of the simulation).
 //! - [`slip`]: the sides' contact per cycle (load, toe load, heel lift, friction use, slip).
 //!
 //! Resolved choices and limits:
@@ -44,13 +46,16 @@
 //! - Verdict: walked = no fall (base height never below its start minus `fall_drop`, trunk
 //!   tilt never above `max_tilt`) and forward progress `>= min_progress` of the planned
 //!   base travel. Apart from it, the friction verdict ([`slip`]: friction use, slip speed,
-//!   slip = a side sliding [`SLIP_DISTANCE`] within one contact). A simulation that diverges
+//!   slip = a side sliding [`SLIP_DISTANCE`] within one contact), the contact verdict (no
+//!   hop), the limits verdict (no joint past its range) and the self-collision verdict (no
+//!   interpenetrating segments, [`margins`]). A simulation that diverges
 //!   numerically ([`biped_sim::SimError::is_divergence`]) is a fall at its last finite sample
 //!   (`diverged` in the summary), not an error.
 
 pub mod feedforward;
 pub mod flight;
 pub mod force;
+pub mod margins;
 pub mod reference;
 pub mod robot;
 mod robot_legs;

@@ -3,6 +3,7 @@
 
 use super::feedforward::Feedforward;
 use super::force::ForceControl;
+use super::margins::simulated_margins;
 use super::reference::{build_robot_reference, JointReference};
 use super::robot::{DynamicRobot, PlantSource};
 use super::slip::{SideContact, SideSample};
@@ -77,7 +78,7 @@ pub fn run_dynamic_walk_robot(
     ctrl.scale_gains(p.gain_scale);
     let mut sim = Simulation::new(plant, ctrl, Integrator::Rk4, z0).map_err(model_err)?;
     let duration = (reference.len() - 1) as f64 * reference.dt + p.hold_time;
-    simulate(&mut sim, &reference, p, duration)
+    simulate(&mut sim, (&reference, walk), p, duration)
 }
 
 /// The plant of `robot` with the end stops and ground friction of `p`.
@@ -143,7 +144,7 @@ pub fn start_on_ground(plant: &Plant, q: &DVector<f64>) -> Result<DVector<f64>, 
 /// simulation diverged ([`SimError::is_divergence`]: a fall at the last finite sample).
 fn simulate(
     sim: &mut Simulation<TrackingController>,
-    r: &JointReference,
+    (r, robot): (&JointReference, &WalkRobot),
     p: &DynamicWalkParams,
     duration: f64,
 ) -> Result<DynamicWalkRun, WalkError> {
@@ -186,7 +187,8 @@ fn simulate(
     }
     let wall = start.elapsed().as_secs_f64();
     let rhs = sim.plant().rhs_count() - rhs0;
-    let summary = DynamicWalkSummary::evaluate(&s, r, p, (wall, rhs), (fell_at, diverged));
+    let margins = simulated_margins(robot, &s)?;
+    let summary = DynamicWalkSummary::evaluate(&s, r, p, (wall, rhs), (fell_at, diverged), margins);
     Ok(DynamicWalkRun {
         series: s,
         summary,
