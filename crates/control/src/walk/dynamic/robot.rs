@@ -86,30 +86,11 @@ impl DynamicRobot {
 
     /// The robot of a loaded description with its walk `walk` (of
     /// [`WalkRobot::from_description`]); see the module docs. Both feet must have the same
-    /// sole rectangle (mirrored in y), and every leg six joints.
+    /// sole rectangle, and every leg six joints.
     pub fn from_description(robot: &Robot, walk: WalkRobot) -> Result<Self, WalkError> {
         let d = &robot.description;
         let file = &d.file;
-        let [l, r] = &d.feet;
-        let mirrored = l.sole_size == r.sole_size
-            && (l.sole_center.x - r.sole_center.x).abs() < 1e-9
-            && (l.sole_center.y + r.sole_center.y).abs() < 1e-9
-            && (l.sole_center.z - r.sole_center.z).abs() < 1e-9;
-        if !mirrored || l.sole_center.y.abs() > 1e-9 {
-            return Err(WalkError::Description(format!(
-                "{file}: the dynamic walk needs the same sole rectangle on both feet, centred \
-                 in y"
-            )));
-        }
-        let feet = UrdfFeet {
-            links: vec![
-                ("left".into(), l.frame.clone()),
-                ("right".into(), r.frame.clone()),
-            ],
-            center: l.sole_center,
-            length: l.sole_size[0],
-            width: l.sole_size[1],
-        };
+        let feet = urdf_feet(robot)?;
         let armature = d
             .armature
             .iter()
@@ -155,6 +136,27 @@ impl DynamicRobot {
     pub fn com_height(&self) -> f64 {
         self.walk.com_height
     }
+}
+
+/// The description's feet as the plant's contact feet (one rectangle for both).
+fn urdf_feet(robot: &Robot) -> Result<UrdfFeet, WalkError> {
+    let d = &robot.description;
+    let [l, r] = &d.feet;
+    if l.sole_center != r.sole_center || l.sole_size != r.sole_size {
+        return Err(WalkError::Description(format!(
+            "{}: the dynamic walk needs the same sole rectangle on both feet",
+            d.file
+        )));
+    }
+    Ok(UrdfFeet {
+        links: vec![
+            ("left".into(), l.frame.clone()),
+            ("right".into(), r.frame.clone()),
+        ],
+        center: l.sole_center,
+        length: l.sole_size[0],
+        width: l.sole_size[1],
+    })
 }
 
 /// Roll stiffness of the soles on the ground over the robot's toppling stiffness `m g h` that
