@@ -215,8 +215,6 @@ fn one_line_error(args: &[&str]) -> String {
 fn bad_robots_fail_with_one_located_line() {
     let err = one_line_error(&["walk", "--robot", "nosuch"]);
     assert!(err.contains("--robot") && err.contains("nosuch"), "{err}");
-    let err = one_line_error(&["walk", "--robot", "g1", "--dynamic"]);
-    assert!(err.contains("not available yet"), "{err}");
 
     let dir = temp("bad");
     std::fs::create_dir_all(&dir).unwrap();
@@ -239,6 +237,15 @@ fn bad_robots_fail_with_one_located_line() {
         err.contains("typo.toml:") && err.contains("left_kne_joint"),
         "{err}"
     );
+    let short = dir.join("short_leg.toml");
+    let leg = "\"left_ankle_pitch_joint\", \"left_ankle_roll_joint\"]";
+    assert!(text.contains(leg));
+    std::fs::write(&short, text.replace(leg, "\"left_ankle_pitch_joint\"]")).unwrap();
+    let err = one_line_error(&["walk", "--robot", short.to_str().unwrap(), "--dynamic"]);
+    assert!(
+        err.contains("--robot") && err.contains("short_leg.toml") && err.contains("5 joints"),
+        "{err}"
+    );
     let start = text.find("[collision]").unwrap();
     let end = text.find("[drives]").unwrap();
     let bare = dir.join("bare.toml");
@@ -248,5 +255,93 @@ fn bad_robots_fail_with_one_located_line() {
         err.contains("bare.toml") && err.contains("[collision]"),
         "{err}"
     );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `biped walk --robot g1 --dynamic`: the G1 walks 10 steps of its natural step length in the
+/// contact simulation (end stops on), every verdict kept, and writes the dynamic walk's files;
+/// the summary's distance is the recorded base's travel and no recorded joint angle leaves
+/// the URDF's range.
+#[test]
+fn g1_walks_dynamically_with_every_verdict_kept() {
+    let dir = temp("dynamic");
+    let out = biped()
+        .args([
+            "walk",
+            "--robot",
+            "g1",
+            "--dynamic",
+            "--method",
+            "minimization",
+        ])
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        stdout.contains("dynamic (minimization): walked"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("dynamic limits and self-collision: kept"),
+        "{stdout}"
+    );
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let d = &s["dynamic"];
+    for key in [
+        "walked",
+        "contact_kept",
+        "friction_kept",
+        "limits_kept",
+        "collision_free",
+    ] {
+        assert_eq!(d[key], true, "{key}: {d}");
+    }
+    assert_eq!(d["end_stops"], true);
+    assert!(d["fell_at"].is_null(), "{d}");
+    assert!(s["violations"].as_array().unwrap().is_empty(), "{s}");
+    let step = s["robot"]["step_length"].as_f64().unwrap();
+    let planned = d["planned_distance"].as_f64().unwrap();
+    assert!(
+        (planned - 9.0 * step).abs() < 0.05 * planned,
+        "{planned} vs {step}"
+    );
+    let (head, rows) = csv(&dir.join("dynamic.csv"));
+    let x = column(&head, "base_x");
+    let travel = rows.last().unwrap()[x] - rows[0][x];
+    assert!((travel - d["distance"].as_f64().unwrap()).abs() < 1e-6);
+    assert!(travel > 0.95 * planned, "{travel} of {planned}");
+    let recording = std::fs::File::open(dir.join("dynamic_recording.csv.gz")).unwrap();
+    let mut text = String::new();
+    std::io::Read::read_to_string(&mut flate2::read::GzDecoder::new(recording), &mut text).unwrap();
+    let g1 = Robot::load(Robot::bundled("g1").unwrap()).unwrap();
+    let mut lines = text.lines();
+    let names: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let ranges: Vec<(usize, [f64; 2])> = g1
+        .urdf
+        .joints
+        .iter()
+        .filter_map(|j| {
+            let col = names.iter().position(|n| *n == format!("q[{}]", j.name))?;
+            Some((col, j.range?))
+        })
+        .collect();
+    assert_eq!(ranges.len(), 29);
+    let mut rows = 0;
+    for line in lines {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        for &(col, [lo, hi]) in &ranges {
+            assert!(v[col] >= lo && v[col] <= hi, "{} = {}", names[col], v[col]);
+        }
+        rows += 1;
+    }
+    assert!(rows > 100, "{rows} recorded rows");
     std::fs::remove_dir_all(&dir).ok();
 }

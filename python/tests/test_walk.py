@@ -72,3 +72,17 @@ def test_walk_robot_g1():
     assert "q[left_knee_joint]" in tables["minimization_trajectory"]
     with pytest.raises(biped.BipedError, match="--robot"):
         biped.walk(robot="nosuch")
+
+
+def test_walk_robot_g1_dynamic():
+    summary, tables = biped.walk(robot="g1", steps=4, method="minimization", dynamic=True)
+    d = summary["dynamic"]
+    assert d["walked"] and d["fell_at"] is None
+    assert d["contact_kept"] and d["friction_kept"] and d["limits_kept"] and d["collision_free"]
+    assert d["end_stops"] and d["min_joint_margin"] > 0 and d["min_distance"] > 0
+    assert d["distance"] > 0.95 * d["planned_distance"] > 0
+    assert summary["violations"] == []
+    assert {"dynamic", "dynamic_recording"} <= set(tables)
+    x = tables["dynamic"]["base_x"]
+    assert abs((x[-1] - x[0]) - d["distance"]) < 1e-6
+    assert "q[left_knee_joint]" in tables["dynamic_recording"]

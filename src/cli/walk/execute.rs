@@ -6,8 +6,8 @@ use super::outdir::{self, OutputDir, Status};
 use super::{interrupt, report, robot, tables, WalkArgs};
 use biped_control::pattern::{PatternParams, WalkingPattern};
 use biped_control::walk::{
-    run_dynamic_walk, run_walk_robot, DynamicWalkParams, DynamicWalkRun, DynamicWalkSummary,
-    Method, WalkParams, WalkRobot, WalkRun,
+    run_dynamic_walk_robot, run_walk_robot, DynamicRobot, DynamicWalkParams, DynamicWalkRun,
+    DynamicWalkSummary, Method, WalkParams, WalkRobot, WalkRun,
 };
 use biped_sim::record::replay::write_csv_gz;
 use biped_sim::Recorder;
@@ -69,14 +69,7 @@ pub fn execute(args: &WalkArgs, write: bool) -> Result<Walk, String> {
         "all" => Method::ALL.to_vec(),
         m => vec![m.parse().map_err(|e| format!("--method: {e}"))?],
     };
-    let chosen = robot::choose(args.robot.as_deref())?;
-    if args.dynamic && !chosen.lola {
-        return Err(format!(
-            "--dynamic: the dynamic walk of described robots is not available yet (--robot {}); \
-             walk it kinematically without --dynamic",
-            args.robot.as_deref().unwrap_or("")
-        ));
-    }
+    let chosen = robot::choose(args.robot.as_deref(), args.dynamic)?;
     let robot = chosen.robot;
     let step_length = args.step_length.unwrap_or(robot.natural_step_length);
     let params = robot.pattern_params(args.steps, step_length, args.step_time);
@@ -91,7 +84,7 @@ pub fn execute(args: &WalkArgs, write: bool) -> Result<Walk, String> {
     let mut tables = Vec::new();
     let walked = walk_all(
         args,
-        &robot,
+        (&robot, chosen.dynamic.as_ref()),
         &pattern,
         &methods,
         dir,
@@ -166,7 +159,7 @@ type Walks = (Vec<WalkRun>, Option<(Method, DynamicWalkRun)>);
 /// part's summary to `summary` as it finishes.
 fn walk_all(
     args: &WalkArgs,
-    robot: &WalkRobot,
+    (robot, dynamic): (&WalkRobot, Option<&DynamicRobot>),
     pattern: &WalkingPattern,
     methods: &[Method],
     dir: Option<&Path>,
@@ -202,15 +195,15 @@ fn walk_all(
     if let Some(dir) = dir {
         tables::write_plots(&runs, dir)?;
     }
-    if !args.dynamic {
+    let Some(dynamic) = dynamic else {
         return Ok((runs, None));
-    }
+    };
     check_interrupt()?;
     let method = match methods {
         [m] => *m,
         _ => Method::Minimization,
     };
-    let run = dynamic_walk(args, method, pattern.params().step_length)?;
+    let run = dynamic_walk(args, dynamic, method, pattern.params().step_length)?;
     let table = tables::dynamic_table(&run)?;
     if let Some(dir) = dir {
         tables::dynamic_plots(&table, dir)?;
@@ -218,11 +211,12 @@ fn walk_all(
     keep(tables, dir, "dynamic".into(), table)?;
     let recording = tables::dynamic_recording(&run)?;
     keep(tables, dir, "dynamic_recording".into(), recording)?;
-    summary.insert("dynamic".into(), serde_json::to_value(run.summary)?);
+    summary.insert("dynamic".into(), serde_json::to_value(&run.summary)?);
     Ok((runs, Some((method, run))))
 }
 
-/// The dynamic walk's violations: a foot that slipped (friction), a hop (contact).
+/// The dynamic walk's violations: a foot that slipped (friction), a hop (contact), a joint past
+/// its range (limits), interpenetrating segments (self-collision).
 fn dynamic_violations(s: &DynamicWalkSummary, max_flight: f64) -> Vec<String> {
     let slip = s.slip_at.map(|t| {
         format!(
@@ -237,7 +231,23 @@ fn dynamic_violations(s: &DynamicWalkSummary, max_flight: f64) -> Vec<String> {
             s.longest_flight
         )
     });
-    slip.into_iter().chain(hop).collect()
+    let limits = (!s.limits_kept).then(|| {
+        format!(
+            "dynamic walk: joint limits: {} {:.4} rad beyond its range in the simulation",
+            s.min_joint_margin_at, -s.min_joint_margin
+        )
+    });
+    let collision = (!s.collision_free).then(|| {
+        format!(
+            "dynamic walk: self-collision: {} interpenetrate by {:.4} m in the simulation",
+            s.min_distance_at, -s.min_distance
+        )
+    });
+    slip.into_iter()
+        .chain(hop)
+        .chain(limits)
+        .chain(collision)
+        .collect()
 }
 
 /// One-line error of a failed dynamic walk.
@@ -272,9 +282,10 @@ fn keep(
     Ok(())
 }
 
-/// Runs the dynamic walk of `method`.
+/// Runs the dynamic walk of `robot` with `method`.
 fn dynamic_walk(
     args: &WalkArgs,
+    robot: &DynamicRobot,
     method: Method,
     step_length: f64,
 ) -> Result<DynamicWalkRun, Box<dyn std::error::Error>> {
@@ -285,7 +296,7 @@ fn dynamic_walk(
         method,
         end_stops: !args.no_end_stops,
         friction: args.friction,
-        ..DynamicWalkParams::default()
+        ..DynamicWalkParams::for_robot(robot)?
     };
     let p = if args.open_loop {
         DynamicWalkParams {
@@ -296,5 +307,5 @@ fn dynamic_walk(
     } else {
         p
     };
-    Ok(run_dynamic_walk(&p)?)
+    Ok(run_dynamic_walk_robot(robot, &p)?)
 }

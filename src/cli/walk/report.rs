@@ -161,7 +161,25 @@ fn dynamic_line(method: Method, run: &DynamicWalkRun) -> io::Result<()> {
             1e3 * s.max_slip_distance
         ),
     }?;
-    contact_line(s)
+    contact_line(s)?;
+    margins_line(s)
+}
+
+/// The simulated motion's joint-limit margin and segment distance, in one line.
+fn margins_line(s: &DynamicWalkSummary) -> io::Result<()> {
+    outln!(
+        "dynamic limits and self-collision: {} (smallest joint margin {:.3} rad, {}; smallest segment distance {:.4} m, {})",
+        match (s.limits_kept, s.collision_free) {
+            (true, true) => "kept",
+            (false, true) => "a joint LEFT ITS RANGE",
+            (true, false) => "segments INTERPENETRATED",
+            (false, false) => "a joint LEFT ITS RANGE and segments INTERPENETRATED",
+        },
+        s.min_joint_margin,
+        s.min_joint_margin_at,
+        s.min_distance,
+        s.min_distance_at
+    )
 }
 
 /// The dynamic walk's flight phases and peak ground force, in one line.

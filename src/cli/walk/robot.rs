@@ -1,7 +1,7 @@
 //! `biped walk --robot`: the walked robot, the Lola-like biped by default or a robot
 //! description (`g1`, `talos` or a description file), as a [`WalkRobot`].
 
-use biped_control::walk::WalkRobot;
+use biped_control::walk::{DynamicRobot, WalkRobot};
 use biped_robots::description::Robot;
 use biped_robots::lola::{self, LolaType};
 use std::path::{Path, PathBuf};
@@ -12,20 +12,25 @@ pub struct Chosen {
     pub robot: WalkRobot,
     /// `the Lola-like biped (Type 2, 31 DoF)`, `g1 (bundled g1.toml, 35 DoF)`.
     pub label: String,
-    /// True for the Lola-like biped (the only robot of `--dynamic` so far).
-    pub lola: bool,
+    /// The robot of the dynamic walk (with `dynamic`).
+    pub dynamic: Option<DynamicRobot>,
 }
 
-/// The robot of `--robot` (`None`: the Lola-like biped); one-line errors start `--robot:`.
-pub fn choose(robot: Option<&str>) -> Result<Chosen, String> {
+/// The robot of `--robot` (`None`: the Lola-like biped), with its dynamic walk's robot if
+/// `dynamic`; one-line errors start `--robot:`.
+pub fn choose(robot: Option<&str>, dynamic: bool) -> Result<Chosen, String> {
     let Some(value) = robot else {
         let lola = lola::build(LolaType::Type2).map_err(|e| e.to_string())?;
         let robot = WalkRobot::lola(&lola).map_err(|e| e.to_string())?;
         let label = format!("the Lola-like biped (Type 2, {} DoF)", robot.model.nv());
+        let dynamic = dynamic
+            .then(|| DynamicRobot::lola(LolaType::Type2))
+            .transpose()
+            .map_err(|e| e.to_string())?;
         return Ok(Chosen {
             robot,
             label,
-            lola: true,
+            dynamic,
         });
     };
     let path = description_path(value)?;
@@ -36,10 +41,14 @@ pub fn choose(robot: Option<&str>) -> Result<Chosen, String> {
         None => path.display().to_string(),
     };
     let label = format!("{} ({file}, {} DoF)", robot.name, robot.model.nv());
+    let dynamic = dynamic
+        .then(|| DynamicRobot::from_description(&loaded, robot.clone()))
+        .transpose()
+        .map_err(|e| format!("--robot: {e}"))?;
     Ok(Chosen {
         robot,
         label,
-        lola: false,
+        dynamic,
     })
 }
 

@@ -60,7 +60,8 @@ pub mod verdict;
 
 pub use controller::{CycleInfo, WalkController};
 pub use dynamic::{
-    run_dynamic_walk, DynamicWalkParams, DynamicWalkRun, DynamicWalkSeries, DynamicWalkSummary,
+    run_dynamic_walk, run_dynamic_walk_robot, DynamicRobot, DynamicWalkParams, DynamicWalkRun,
+    DynamicWalkSeries, DynamicWalkSummary,
 };
 pub use error::WalkError;
 pub use evaluate::{CycleMetrics, Evaluator};

@@ -17,14 +17,14 @@ use biped_dynamics::{inverse_dynamics, BodyId, Data, Model, Wrench};
 use biped_robots::lola::LolaModel;
 use nalgebra::{DVector, Vector2, Vector3};
 
-/// Preallocated RNEA feedforward for Lola (own dynamics workspace).
+/// Preallocated RNEA feedforward (own dynamics workspace).
 #[derive(Debug, Clone)]
 pub struct Feedforward {
     model: Model,
     data: Data,
     root: BodyId,
     feet: [BodyId; 2],
-    toes: [BodyId; 2],
+    toes: Option<[BodyId; 2]>,
     fext: Vec<Wrench>,
     ground: (Vector3<f64>, Vector3<f64>),
     shares: [f64; 2],
@@ -34,11 +34,26 @@ impl Feedforward {
     /// Feedforward for `lola` (feet `l_foot`, `r_foot`, the bodies carrying the soles, and
     /// their toe segments `l_toe`, `r_toe`).
     pub fn new(lola: &LolaModel) -> Result<Self, WalkError> {
-        let model = lola.model.clone();
-        let root = floating_root(&model)?;
-        let id = |n: &str| body(&model, n);
+        let m = &lola.model;
+        let id = |n: &str| body(m, n);
         let feet = [id("l_foot")?, id("r_foot")?];
         let toes = [id("l_toe")?, id("r_toe")?];
+        Self::for_bodies(m.clone(), feet, Some(toes))
+    }
+
+    /// Feedforward for `model` whose `[left, right]` bodies `feet` carry the ground wrench
+    /// with the feet flat and `toes` (if the feet have toe segments) in toe-off, each at its
+    /// origin.
+    pub fn for_bodies(
+        model: Model,
+        feet: [BodyId; 2],
+        toes: Option<[BodyId; 2]>,
+    ) -> Result<Self, WalkError> {
+        let root = floating_root(&model)?;
+        let nb = model.nbodies();
+        if feet.iter().chain(toes.iter().flatten()).any(|&b| b >= nb) {
+            return Err(model_err("a foot or toe frame's body is not in the model"));
+        }
         Ok(Self {
             toes,
             data: Data::new(&model),
@@ -97,8 +112,8 @@ impl Feedforward {
             &Vector3::zeros(),
         )?;
         self.ground = (f, m0);
-        let carrier = [0, 1].map(|i| match s.feet[i].contact {
-            Contact::Toe => self.toes[i],
+        let carrier = [0, 1].map(|i| match (s.feet[i].contact, &self.toes) {
+            (Contact::Toe, Some(toes)) => toes[i],
             _ => self.feet[i],
         });
         let p = carrier.map(|b| self.data.world_pos[b]);

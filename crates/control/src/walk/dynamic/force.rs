@@ -14,23 +14,16 @@
 //! one that carries less reaches down.
 
 use super::reference::JointReference;
+use super::robot::DynamicRobot;
+use super::robot_legs::{DynamicLeg, LEG_JOINTS};
+use crate::tasks::Frame;
 use crate::walk::error::{model_err, WalkError};
 use crate::walk::evaluate::body;
-use biped_dynamics::{BodyId, Data, JacobianFrame, Jacobians, Model};
+use biped_dynamics::{Data, JacobianFrame, Jacobians, Model};
 use biped_robots::lola::LolaModel;
 use biped_sim::plant::Plant;
 use biped_sim::sensors::Sensors;
 use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
-
-/// The leg joints of each side that move its foot (hip, knee, ankle; the toe stays).
-const LEG_JOINTS: [&str; 6] = [
-    "hip_rotation",
-    "hip_adduction",
-    "thigh",
-    "shank",
-    "ankle_cross",
-    "foot",
-];
 
 /// Gains of the [`ForceControl`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -58,7 +51,7 @@ impl Default for ForceGains {
 }
 
 /// Per side: the actuator index and the velocity index of each leg joint.
-type Leg = [(usize, usize); 6];
+type Leg = [(usize, usize); LEG_JOINTS];
 
 /// The foot force controller: model workspace for the leg Jacobians and the height difference.
 #[derive(Debug, Clone)]
@@ -71,7 +64,7 @@ pub struct ForceControl {
     q: DVector<f64>,
     actuator_q: Vec<usize>,
     legs: [Leg; 2],
-    soles: [BodyId; 2],
+    soles: [Frame; 2],
     entries: [Vec<usize>; 2],
     dz: f64,
 }
@@ -80,18 +73,43 @@ impl ForceControl {
     /// Force control for `lola` (its soles `l_sole`, `r_sole`, legs `l_*`, `r_*`) on `plant`
     /// (contact sides `left`, `right`; actuators in the order of `lola.limits`).
     pub fn new(lola: &LolaModel, plant: &Plant, gains: ForceGains) -> Result<Self, WalkError> {
-        let model = lola.model.clone();
-        let actuator = |name: &str| {
-            lola.limits
+        let m = &lola.model;
+        let soles = [body(m, "l_sole")?, body(m, "r_sole")?].map(Frame::body);
+        let legs = [DynamicLeg::lola("l"), DynamicLeg::lola("r")];
+        Self::for_legs(m.clone(), plant, &legs, soles, gains)
+    }
+
+    /// Force control of `robot` on its `plant` ([`DynamicRobot::legs`], [`DynamicRobot::soles`]).
+    pub fn for_robot(
+        robot: &DynamicRobot,
+        plant: &Plant,
+        gains: ForceGains,
+    ) -> Result<Self, WalkError> {
+        let model = plant.model().clone();
+        Self::for_legs(model, plant, &robot.legs, robot.soles, gains)
+    }
+
+    /// Force control moving the `[left, right]` sole frames `soles` of `model` (the plant's
+    /// coordinates) through the joints of `legs` on `plant` (contact sides `left`, `right`).
+    pub fn for_legs(
+        model: Model,
+        plant: &Plant,
+        legs: &[DynamicLeg; 2],
+        soles: [Frame; 2],
+        gains: ForceGains,
+    ) -> Result<Self, WalkError> {
+        let actuators = plant.actuators();
+        let actuator = |name: &String| {
+            actuators
                 .iter()
-                .position(|l| l.name == name)
-                .map(|a| (a, lola.limits[a].v_index))
+                .position(|a| &a.name == name)
+                .map(|a| (a, actuators[a].joint_v))
                 .ok_or_else(|| model_err(format!("no actuated joint `{name}`")))
         };
-        let leg = |side: &str| -> Result<Leg, WalkError> {
-            let mut out = [(0, 0); 6];
-            for (slot, j) in out.iter_mut().zip(LEG_JOINTS) {
-                *slot = actuator(&format!("{side}_{j}"))?;
+        let leg = |l: &DynamicLeg| -> Result<Leg, WalkError> {
+            let mut out = [(0, 0); LEG_JOINTS];
+            for (slot, j) in out.iter_mut().zip(&l.joints) {
+                *slot = actuator(j)?;
             }
             Ok(out)
         };
@@ -102,15 +120,18 @@ impl ForceControl {
                 .ok_or_else(|| model_err(format!("the plant has no contact side `{name}`")))?;
             Ok::<_, WalkError>(contact.side_entries(side).to_vec())
         };
+        if soles.iter().any(|s| s.body >= model.nbodies()) {
+            return Err(model_err("a sole frame's body is not in the model"));
+        }
         Ok(Self {
             gains,
             data: Data::new(&model),
             jac: Jacobians::new(&model),
             full: DMatrix::zeros(6, model.nv()),
             q: model.neutral(),
-            actuator_q: lola.limits.iter().map(|l| l.q_index).collect(),
-            legs: [leg("l")?, leg("r")?],
-            soles: [body(&model, "l_sole")?, body(&model, "r_sole")?],
+            actuator_q: actuators.iter().map(|a| a.joint_q).collect(),
+            legs: [leg(&legs[0])?, leg(&legs[1])?],
+            soles,
             entries: [entries("left")?, entries("right")?],
             dz: 0.0,
             model,
@@ -197,9 +218,15 @@ impl ForceControl {
     /// Leg joint offsets that move side `side`'s sole by `dp` (pelvis axes), orientation kept:
     /// `dq = J^T (J J^T + lambda^2 I)^-1 [0; dp]` with the sole's leg Jacobian `J`.
     fn leg_offsets(&mut self, side: usize, dp: Vector3<f64>) -> Result<Vector6<f64>, WalkError> {
-        let (sole, zero) = (self.soles[side], Vector3::zeros());
+        let sole = self.soles[side];
+        let point = sole.offset.translation.vector;
         self.jac
-            .frame_jacobian(sole, &zero, JacobianFrame::WorldAligned, &mut self.full)
+            .frame_jacobian(
+                sole.body,
+                &point,
+                JacobianFrame::WorldAligned,
+                &mut self.full,
+            )
             .map_err(model_err)?;
         let mut j = Matrix6::zeros();
         for (c, &(_, v)) in self.legs[side].iter().enumerate() {

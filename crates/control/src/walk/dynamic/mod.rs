@@ -7,14 +7,24 @@
 //!   support feet (single support: stance foot; double support: split by the motion's ZMP).
 //! - [`tracking`]: [`TrackingController`], PD per joint + feedforward, joint-torque mode.
 //! - [`run`]: [`run_dynamic_walk`] on the Lola Type 2 plant (RK4, h = 1 ms), time series and
-//!   the verdict.
+//!   the verdict; [`run_dynamic_walk_robot`] on the plant of any [`DynamicRobot`] ([`robot`]:
+//!   the Lola-like model or a robot description, e.g. the G1).
+//! - [`margins`]: the joint-limit margin and SSV distance of the simulated poses (the
+//!   limits and self-collision verdicts of the simulation).
 //! - [`slip`]: the sides' contact per cycle (load, toe load, heel lift, friction use, slip).
 //!
 //! Resolved choices and limits:
-//! - The IK model and the plant are both `lola::build(Type2)`: the same `q`/`v` layout, the
-//!   plant's actuators in the order of `LolaModel::limits` (one per actuated joint), so the
-//!   reference maps one to one; the start pose is the first reference sample lowered so that
-//!   the soles rest at the contact law's static penetration.
+//! - The IK model and the plant share the `q`/`v` layout (Lola: both `lola::build(Type2)`; a
+//!   described robot: the URDF model, the plant adding rotor bodies without coordinates); the
+//!   reference holds one column per plant actuator, in the plant's order; the start pose is the
+//!   first reference sample lowered so that the soles rest at the contact law's static
+//!   penetration.
+//! - Described robots: the defaults of [`DynamicWalkParams`] were tuned on the Lola-like
+//!   model; [`DynamicWalkParams::for_robot`] scales the foot force control and the fall
+//!   criterion to the robot's weight and CoM height, and [`robot`] derives the ground's
+//!   contact law from the robot's weight, CoM height and soles (a narrow sole on a soft ground
+//!   rolls under the robot: the G1 falls sideways on the light-feet contact law). Feet without
+//!   toe joints stay flat (the kinematic walk's flat-foot pattern).
 //! - Tracking the LIPM pattern as planned (PD + feedforward only) falls forward after 2-4
 //!   steps: the multibody ZMP of the IK motion leaves the 0.13 m front edge of the sole. So
 //!   the pattern's CoM is corrected for the multibody ZMP ([`mod@reference`], 2 iterations by
@@ -36,14 +46,19 @@
 //! - Verdict: walked = no fall (base height never below its start minus `fall_drop`, trunk
 //!   tilt never above `max_tilt`) and forward progress `>= min_progress` of the planned
 //!   base travel. Apart from it, the friction verdict ([`slip`]: friction use, slip speed,
-//!   slip = a side sliding [`SLIP_DISTANCE`] within one contact). A simulation that diverges
+//!   slip = a side sliding [`SLIP_DISTANCE`] within one contact), the contact verdict (no
+//!   hop), the limits verdict (no joint past its range) and the self-collision verdict (no
+//!   interpenetrating segments, [`margins`]). A simulation that diverges
 //!   numerically ([`biped_sim::SimError::is_divergence`]) is a fall at its last finite sample
 //!   (`diverged` in the summary), not an error.
 
 pub mod feedforward;
 pub mod flight;
 pub mod force;
+pub mod margins;
 pub mod reference;
+pub mod robot;
+mod robot_legs;
 pub mod run;
 pub mod slip;
 pub mod stabiliser;
@@ -52,8 +67,12 @@ pub mod tracking;
 
 pub use feedforward::Feedforward;
 pub use force::{ForceControl, ForceGains};
-pub use reference::{build_reference, JointReference, ReferenceOptions};
-pub use run::{run_dynamic_walk, start_on_ground, DynamicWalkRun};
+pub use reference::{build_reference, build_robot_reference, JointReference, ReferenceOptions};
+pub use robot::{DynamicRobot, PlantSource, RobotScale, FOOT_DAMPING_RATIO, SOLE_ROLL_MARGIN};
+pub use robot_legs::{DynamicLeg, LEG_JOINTS};
+pub use run::{
+    robot_plant, run_dynamic_walk, run_dynamic_walk_robot, start_on_ground, DynamicWalkRun,
+};
 pub use slip::{SideContact, SideSample, SlipTracker, SLIP_DISTANCE, SLIP_POINTS};
 pub use stabiliser::{Stabiliser, StabiliserGains};
 pub use summary::{DynamicWalkSeries, DynamicWalkSummary};
@@ -138,6 +157,18 @@ impl Default for DynamicWalkParams {
 }
 
 impl DynamicWalkParams {
+    /// The defaults for `robot`: [`Self::default`] for the Lola-like model, whose numbers they
+    /// are; for other robots the gains and criteria that depend on the robot's size follow
+    /// from its weight and CoM height against the Lola-like model's ([`RobotScale`]).
+    pub fn for_robot(robot: &DynamicRobot) -> Result<Self, WalkError> {
+        let d = Self::default();
+        if matches!(robot.source, PlantSource::Lola(_)) {
+            return Ok(d);
+        }
+        let lola = DynamicRobot::lola(biped_robots::lola::LolaType::Type2)?;
+        Ok(RobotScale::between(robot, &lola).apply(d))
+    }
+
     /// Options of the reference built from these parameters.
     pub fn reference_options(&self) -> ReferenceOptions {
         ReferenceOptions {

@@ -17,8 +17,8 @@ use super::feedforward::Feedforward;
 use super::stabiliser::roll_pitch;
 use crate::pattern::{Phase, WalkingPattern};
 use crate::walk::error::WalkError;
-use crate::walk::{Method, WalkController, WalkParams};
-use biped_robots::lola::{JointLimit, LolaModel};
+use crate::walk::{Method, WalkController, WalkJoint, WalkParams, WalkRobot};
+use biped_robots::lola::LolaModel;
 use nalgebra::{DVector, Quaternion, UnitQuaternion, Vector2, Vector3};
 
 /// Joint reference of the actuated joints, sampled every `dt` (row-major: sample x joint).
@@ -26,7 +26,7 @@ use nalgebra::{DVector, Quaternion, UnitQuaternion, Vector2, Vector3};
 pub struct JointReference {
     /// Sample period \[s].
     pub dt: f64,
-    /// Number of actuated joints per sample (the order of `LolaModel::limits`).
+    /// Number of actuated joints per sample (the order of the plant's actuators).
     pub joints: usize,
     /// Joint angles \[rad].
     pub q: Vec<f64>,
@@ -103,12 +103,12 @@ type Motion = (Vec<DVector<f64>>, Vec<DVector<f64>>);
 
 /// Runs the IK over every sample of `pattern`.
 fn kinematic_walk(
-    lola: &LolaModel,
+    robot: &WalkRobot,
     pattern: &WalkingPattern,
     o: &ReferenceOptions,
 ) -> Result<Motion, WalkError> {
     let dt = pattern.params().dt;
-    let mut ctrl = WalkController::new(lola, o.method, o.walk, pattern)?;
+    let mut ctrl = WalkController::for_robot(robot, o.method, o.walk, pattern)?;
     let n = pattern.len();
     let (mut qs, mut vs) = (Vec::with_capacity(n), Vec::with_capacity(n));
     for sample in pattern.iter() {
@@ -128,29 +128,44 @@ fn acceleration(vs: &[DVector<f64>], dt: f64, k: usize, a: &mut DVector<f64>) {
     *a /= dt * (next - prev).max(1) as f64;
 }
 
-/// Runs the kinematic walk on `pattern` corrected `o.zmp_iterations` times for the multibody
-/// ZMP (see the module docs) and builds the reference from the last walk.
+/// Runs the kinematic walk of `lola` on `pattern` corrected `o.zmp_iterations` times for the
+/// multibody ZMP (see the module docs) and builds the reference of its actuated joints (the
+/// order of `lola.limits`) from the last walk.
 pub fn build_reference(
     lola: &LolaModel,
     pattern: &WalkingPattern,
     o: &ReferenceOptions,
 ) -> Result<JointReference, WalkError> {
+    let robot = WalkRobot::lola(lola)?;
+    let joints = robot.joints.clone();
+    build_robot_reference(&robot, &joints, Feedforward::new(lola)?, pattern, o)
+}
+
+/// [`build_reference`] for any robot: the kinematic walk of `robot`, the reference of the
+/// joints `joints` (the plant's actuators, in their order; ranges for the clamping and the
+/// excess), the feedforward of `ff`.
+pub fn build_robot_reference(
+    robot: &WalkRobot,
+    joints: &[WalkJoint],
+    mut ff: Feedforward,
+    pattern: &WalkingPattern,
+    o: &ReferenceOptions,
+) -> Result<JointReference, WalkError> {
     let dt = pattern.params().dt;
     let n = pattern.len();
-    let mut ff = Feedforward::new(lola)?;
-    let mut a = DVector::zeros(lola.model.nv());
+    let mut a = DVector::zeros(robot.model.nv());
     let mut offset = vec![[Vector3::zeros(); 2]; n];
     let mut corrected = pattern.clone();
     let mut zmp_error = Vec::new();
     let mut iteration = 0;
     loop {
-        let (qs, vs) = kinematic_walk(lola, &corrected, o)?;
-        let mut r = empty_reference(n, lola.limits.len(), dt, &qs)?;
+        let (qs, vs) = kinematic_walk(robot, &corrected, o)?;
+        let mut r = empty_reference(n, joints.len(), dt, &qs)?;
         let mut err = [Vec::with_capacity(n), Vec::with_capacity(n)];
         for (k, sample) in corrected.iter().enumerate() {
             acceleration(&vs, dt, k, &mut a);
             let tau = ff.compute(&qs[k], &vs[k], &a, sample)?;
-            r.push_sample(lola, (&qs[k], &vs[k], tau), o.clamp_margin);
+            r.push_sample(joints, (&qs[k], &vs[k], tau), o.clamp_margin);
             let p0 = pattern.samples()[k].zmp;
             let p = ff.zmp().unwrap_or(p0);
             err[0].push(p0.x - p.x);
@@ -218,12 +233,12 @@ impl JointReference {
     /// sample, and the base position.
     fn push_sample(
         &mut self,
-        lola: &LolaModel,
+        joints: &[WalkJoint],
         (q, v, tau): (&DVector<f64>, &DVector<f64>, &DVector<f64>),
         clamp: Option<f64>,
     ) {
         let mut clamped = false;
-        for l in &lola.limits {
+        for l in joints {
             let excess = (q[l.q_index] - l.upper).max(l.lower - q[l.q_index]);
             self.max_excess = self.max_excess.max(excess);
             let (qc, c) = clamp_angle(q[l.q_index], l, clamp);
@@ -241,7 +256,7 @@ impl JointReference {
 }
 
 /// `q` clamped into the limits shrunk by `margin` (if any), and the amount moved.
-fn clamp_angle(q: f64, l: &JointLimit, clamp: Option<f64>) -> (f64, f64) {
+fn clamp_angle(q: f64, l: &WalkJoint, clamp: Option<f64>) -> (f64, f64) {
     match clamp {
         Some(m) if l.upper - l.lower > 2.0 * m => {
             let c = q.clamp(l.lower + m, l.upper - m);

@@ -1,18 +1,22 @@
 //! [`run_dynamic_walk`]: the kinematic walk tracked in the contact simulation, with its time
 //! series and pass criteria.
 
+use super::feedforward::Feedforward;
 use super::force::ForceControl;
-use super::reference::{build_reference, JointReference};
+use super::margins::simulated_margins;
+use super::reference::{build_robot_reference, JointReference};
+use super::robot::{DynamicRobot, PlantSource};
 use super::slip::{SideContact, SideSample};
+use super::stabiliser::Stabiliser;
 use super::tracking::TrackingController;
 use super::{DynamicWalkParams, DynamicWalkSeries, DynamicWalkSummary};
 use crate::pattern::WalkingPattern;
 use crate::walk::error::{model_err, WalkError};
-use crate::walk::walk_pattern_params;
+use crate::walk::{WalkJoint, WalkRobot};
 use biped_dynamics::Model;
 use biped_robots::lola::LolaType;
 use biped_robots::plant::lola_plant;
-use biped_sim::plant::{Plant, PlantConfig};
+use biped_sim::plant::{urdf_plant, Plant, PlantConfig};
 use biped_sim::simulation::{Frame, Simulation};
 use biped_sim::{Method as Integrator, SimError};
 use nalgebra::DVector;
@@ -33,39 +37,89 @@ pub struct DynamicWalkRun {
 /// Type 2 plant (torque mode, RK4 at the 1 ms control period) until the walk plus
 /// `p.hold_time` is over or the robot falls.
 pub fn run_dynamic_walk(p: &DynamicWalkParams) -> Result<DynamicWalkRun, WalkError> {
+    run_dynamic_walk_robot(&DynamicRobot::lola(LolaType::Type2)?, p)
+}
+
+/// [`run_dynamic_walk`] for any [`DynamicRobot`]: its plant, its kinematic walk as the
+/// reference, the feedforward, stabiliser and force control on its feet and legs.
+pub fn run_dynamic_walk_robot(
+    robot: &DynamicRobot,
+    p: &DynamicWalkParams,
+) -> Result<DynamicWalkRun, WalkError> {
     p.validate()?;
-    let mut config = PlantConfig::default();
-    config.passive.end_stops = p.end_stops;
-    config.contact.friction = p.friction;
-    let lp = lola_plant(LolaType::Type2, config).map_err(model_err)?;
-    let (mut plant, lola) = (lp.plant, lp.lola);
-    let pattern = WalkingPattern::generate(&walk_pattern_params(
-        &lola,
-        p.steps,
-        p.step_length,
-        p.step_time,
-    )?)?;
-    let reference = build_reference(&lola, &pattern, &p.reference_options())?;
+    let mut plant = robot_plant(robot, p)?;
+    let walk = &robot.walk;
+    let pattern =
+        WalkingPattern::generate(&walk.pattern_params(p.steps, p.step_length, p.step_time))?;
+    let joints = actuated_joints(&plant, walk)?;
+    let ff = Feedforward::for_bodies(plant.model().clone(), robot.feet, robot.toes)?;
+    let reference = build_robot_reference(walk, &joints, ff, &pattern, &p.reference_options())?;
     let q0 = start_on_ground(&plant, &reference.q0)?;
     let z0 = plant
         .initial_state(&q0, &DVector::zeros(plant.layout().nv))
         .map_err(model_err)?;
+    let names: Vec<String> = plant.actuators().iter().map(|a| a.name.clone()).collect();
     let mut ctrl = TrackingController::new(
         &mut plant,
         reference.clone(),
         &q0,
         (p.bandwidth, p.damping),
         p.feedforward,
-        p.stabiliser,
+        None,
     )
     .map_err(model_err)?;
+    if let Some(g) = p.stabiliser {
+        let s = Stabiliser::for_legs(&names, &robot.legs, g).map_err(model_err)?;
+        ctrl = ctrl.with_stabiliser(s);
+    }
     if let Some(g) = p.force {
-        ctrl = ctrl.with_force_control(ForceControl::new(&lola, &plant, g)?);
+        ctrl = ctrl.with_force_control(ForceControl::for_robot(robot, &plant, g)?);
     }
     ctrl.scale_gains(p.gain_scale);
     let mut sim = Simulation::new(plant, ctrl, Integrator::Rk4, z0).map_err(model_err)?;
     let duration = (reference.len() - 1) as f64 * reference.dt + p.hold_time;
-    simulate(&mut sim, &reference, p, duration)
+    simulate(&mut sim, (&reference, walk), p, duration)
+}
+
+/// The plant of `robot` with the end stops and ground friction of `p`.
+pub fn robot_plant(robot: &DynamicRobot, p: &DynamicWalkParams) -> Result<Plant, WalkError> {
+    let mut config = PlantConfig {
+        contact: robot.contact,
+        ..PlantConfig::default()
+    };
+    config.passive.end_stops = p.end_stops;
+    config.contact.friction = p.friction;
+    match &robot.source {
+        PlantSource::Lola(variant) => Ok(lola_plant(*variant, config).map_err(model_err)?.plant),
+        PlantSource::Urdf {
+            path,
+            feet,
+            armature,
+        } => urdf_plant(path, feet, armature, config).map_err(model_err),
+    }
+}
+
+/// The plant's actuated joints in actuator order, with the ranges of `walk`'s joints (none:
+/// unbounded); an actuator on other coordinates than `walk`'s joint of its name is an error.
+fn actuated_joints(plant: &Plant, walk: &WalkRobot) -> Result<Vec<WalkJoint>, WalkError> {
+    plant
+        .actuators()
+        .iter()
+        .map(|a| match walk.joint(&a.name) {
+            Some(j) if (j.q_index, j.v_index) == (a.joint_q, a.joint_v) => Ok(j.clone()),
+            Some(_) => Err(model_err(format!(
+                "actuator {} is on other coordinates than the walk's joint",
+                a.name
+            ))),
+            None => Ok(WalkJoint {
+                name: a.name.clone(),
+                q_index: a.joint_q,
+                v_index: a.joint_v,
+                lower: f64::NEG_INFINITY,
+                upper: f64::INFINITY,
+            }),
+        })
+        .collect()
 }
 
 /// `q` shifted vertically so that the lowest sole point sits at the static penetration of
@@ -90,7 +144,7 @@ pub fn start_on_ground(plant: &Plant, q: &DVector<f64>) -> Result<DVector<f64>, 
 /// simulation diverged ([`SimError::is_divergence`]: a fall at the last finite sample).
 fn simulate(
     sim: &mut Simulation<TrackingController>,
-    r: &JointReference,
+    (r, robot): (&JointReference, &WalkRobot),
     p: &DynamicWalkParams,
     duration: f64,
 ) -> Result<DynamicWalkRun, WalkError> {
@@ -133,7 +187,8 @@ fn simulate(
     }
     let wall = start.elapsed().as_secs_f64();
     let rhs = sim.plant().rhs_count() - rhs0;
-    let summary = DynamicWalkSummary::evaluate(&s, r, p, (wall, rhs), (fell_at, diverged));
+    let margins = simulated_margins(robot, &s)?;
+    let summary = DynamicWalkSummary::evaluate(&s, r, p, (wall, rhs), (fell_at, diverged), margins);
     Ok(DynamicWalkRun {
         series: s,
         summary,

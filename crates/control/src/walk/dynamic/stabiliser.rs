@@ -8,8 +8,10 @@
 //! Sign: Lola's ankle flexion (`*_ankle_cross`, axis y) and adduction (`*_foot`, axis x)
 //! rotate the foot relative to the shank; with the foot on the ground a positive change
 //! rotates the leg by the negative angle, so a forward (positive pitch) lean is answered by a
-//! positive flexion offset.
+//! positive flexion offset. Other robots' ankles ([`DynamicLeg`]) carry the sign of their
+//! axes, so that the offset turns their feet the same way.
 
+use super::robot_legs::DynamicLeg;
 use crate::pattern::Phase;
 use biped_sim::sensors::Imu;
 use biped_sim::SimError;
@@ -51,23 +53,39 @@ fn heading(rot: &UnitQuaternion<f64>) -> Rotation3<f64> {
     Rotation3::from_axis_angle(&Vector3::z_axis(), -x.y.atan2(x.x))
 }
 
-/// The ankle stabiliser: actuator indices of `[left, right]` `[flexion, adduction]`.
+/// The ankle stabiliser: actuator indices and axis signs of `[left, right]`
+/// `[flexion, adduction]`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stabiliser {
     gains: StabiliserGains,
-    ankles: [[usize; 2]; 2],
+    ankles: [[(usize, f64); 2]; 2],
 }
 
 impl Stabiliser {
-    /// Stabiliser for actuators named `names` (Lola: `l_ankle_cross`, `l_foot`, ...).
+    /// Stabiliser for Lola's actuators named `names` (`l_ankle_cross`, `l_foot`, ...).
     pub fn new(names: &[String], gains: StabiliserGains) -> Result<Self, SimError> {
-        let find = |n: &str| {
+        Self::for_legs(
+            names,
+            &[DynamicLeg::lola("l"), DynamicLeg::lola("r")],
+            gains,
+        )
+    }
+
+    /// Stabiliser on the ankles of the `[left, right]` legs `legs`, for actuators named
+    /// `names`.
+    pub fn for_legs(
+        names: &[String],
+        legs: &[DynamicLeg; 2],
+        gains: StabiliserGains,
+    ) -> Result<Self, SimError> {
+        let find = |(n, sign): &(String, f64)| {
             names
                 .iter()
                 .position(|a| a == n)
+                .map(|i| (i, *sign))
                 .ok_or_else(|| SimError::Unknown {
                     kind: "ankle actuator",
-                    name: n.into(),
+                    name: n.clone(),
                 })
         };
         let ok = |x: f64| x.is_finite() && x >= 0.0;
@@ -77,11 +95,12 @@ impl Stabiliser {
                 reason: "must be finite and >= 0".into(),
             });
         }
+        let [l, r] = legs;
         Ok(Self {
             gains,
             ankles: [
-                [find("l_ankle_cross")?, find("l_foot")?],
-                [find("r_ankle_cross")?, find("r_foot")?],
+                [find(&l.ankle[0])?, find(&l.ankle[1])?],
+                [find(&r.ankle[0])?, find(&r.ankle[1])?],
             ],
         })
     }
@@ -103,8 +122,9 @@ impl Stabiliser {
         };
         for (foot, on) in support.into_iter().enumerate() {
             if on {
-                q[self.ankles[foot][0]] += d_pitch;
-                q[self.ankles[foot][1]] += d_roll;
+                let [(pitch, sp), (roll, sr)] = self.ankles[foot];
+                q[pitch] += sp * d_pitch;
+                q[roll] += sr * d_roll;
             }
         }
     }

@@ -1,6 +1,7 @@
 //! Time series and summary (verdict) of a dynamic walk.
 
 use super::flight::Flight;
+use super::margins::SimulatedMargins;
 use super::reference::JointReference;
 use super::slip::{SideSample, SlipTracker};
 use super::DynamicWalkParams;
@@ -63,7 +64,7 @@ impl DynamicWalkSeries {
 }
 
 /// Summary of a dynamic walk (the `"dynamic"` entry of `summary.json`; SI units).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DynamicWalkSummary {
     /// No fall and enough progress.
     pub walked: bool,
@@ -129,6 +130,18 @@ pub struct DynamicWalkSummary {
     /// [`DynamicWalkParams::max_flight`] (the robot walked, it did not hop); independent of
     /// `walked`.
     pub contact_kept: bool,
+    /// Smallest joint-limit margin of the simulated motion ([`super::margins`]) \[rad or m].
+    pub min_joint_margin: f64,
+    /// The joint of `min_joint_margin`.
+    pub min_joint_margin_at: String,
+    /// No joint left its range in the simulation (`min_joint_margin >= 0`).
+    pub limits_kept: bool,
+    /// Smallest SSV distance of the simulated poses ([`super::margins`]) \[m].
+    pub min_distance: f64,
+    /// The segment pair of `min_distance`.
+    pub min_distance_at: String,
+    /// No segments interpenetrated in the simulation (`min_distance > 0`).
+    pub collision_free: bool,
 }
 
 impl DynamicWalkSummary {
@@ -139,6 +152,7 @@ impl DynamicWalkSummary {
         p: &DynamicWalkParams,
         (wall_time, rhs_evaluations): (f64, u64),
         (fell_at, diverged): (Option<f64>, bool),
+        margins: SimulatedMargins,
     ) -> Self {
         let first_last = |v: &[f64]| match (v.first(), v.last()) {
             (Some(a), Some(b)) => b - a,
@@ -206,6 +220,12 @@ impl DynamicWalkSummary {
             peak_ground_force: flight.peak_force,
             mean_ground_force: flight.mean_force,
             contact_kept: flight.longest <= p.max_flight,
+            limits_kept: margins.joint_margin >= 0.0,
+            min_joint_margin: margins.joint_margin,
+            min_joint_margin_at: margins.joint,
+            collision_free: margins.distance > 0.0,
+            min_distance: margins.distance,
+            min_distance_at: margins.pair,
         }
     }
 }

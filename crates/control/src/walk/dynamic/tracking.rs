@@ -33,7 +33,8 @@ pub struct TrackingController {
 impl TrackingController {
     /// Controller for `plant` (torque mode, actuators in the order of the reference) with the
     /// gains of [`JointPd::scaled`] at `q0`; `feedforward = false` runs the PD alone,
-    /// `stabiliser = None` tracks without the ankle stabiliser.
+    /// `stabiliser = None` tracks without the ankle stabiliser (`Some`: on Lola's ankles;
+    /// other robots' through [`Self::with_stabiliser`]).
     pub fn new(
         plant: &mut Plant,
         reference: JointReference,
@@ -63,6 +64,12 @@ impl TrackingController {
             force: None,
             last_error: 0.0,
         })
+    }
+
+    /// Adds (or replaces) the ankle stabiliser ([`Stabiliser`]) of the tracking.
+    pub fn with_stabiliser(mut self, stabiliser: Stabiliser) -> Self {
+        self.stabiliser = Some(stabiliser);
+        self
     }
 
     /// Adds the foot force control ([`ForceControl`]) to the tracking.
