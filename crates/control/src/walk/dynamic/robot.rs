@@ -79,7 +79,7 @@ impl DynamicRobot {
             feet: [id("l_foot")?, id("r_foot")?],
             toes: Some([id("l_toe")?, id("r_toe")?]),
             soles: [id("l_sole")?, id("r_sole")?].map(Frame::body),
-            mass: total_mass(m),
+            mass: m.mass(),
             walk,
         })
     }
@@ -122,7 +122,7 @@ impl DynamicRobot {
             feet: [sl.body, sr.body],
             toes,
             soles: [sl, sr],
-            mass: total_mass(&walk.model),
+            mass: walk.model.mass(),
             walk,
         })
     }
@@ -187,7 +187,7 @@ fn sole_contact(
     let n = points.len() as f64;
     let roll: f64 = points.iter().map(|p| p.y * p.y).sum();
     let m = &walk.model;
-    let topple = total_mass(m) * m.gravity().norm() * walk.com_height;
+    let topple = m.mass() * m.gravity().norm() * walk.com_height;
     let m_foot = m.bodies().get(foot).map_or(0.0, |b| b.inertia().mass());
     let h = crate::pattern::PatternParams::default().dt;
     let cap = (FOOT_MODE_STEP / h).powi(2) * m_foot / n;
@@ -200,11 +200,6 @@ fn sole_contact(
         )));
     }
     Ok(ContactParams::default().with_spring_damper(k, d))
-}
-
-/// Sum of the bodies' masses \[kg].
-fn total_mass(m: &biped_dynamics::Model) -> f64 {
-    m.bodies().iter().map(|b| b.inertia().mass()).sum()
 }
 
 /// How [`super::DynamicWalkParams::for_robot`] scales the defaults (tuned on the Lola-like

@@ -127,7 +127,7 @@ fn actuated_joints(plant: &Plant, walk: &WalkRobot) -> Result<Vec<WalkJoint>, Wa
 pub fn start_on_ground(plant: &Plant, q: &DVector<f64>) -> Result<DVector<f64>, WalkError> {
     let mut q = q.clone();
     let model = plant.model();
-    let mass: f64 = model.bodies().iter().map(|b| b.inertia().mass()).sum();
+    let mass = model.mass();
     let c = plant.contact();
     let per_point = mass * model.gravity().norm() / c.npoints().max(1) as f64;
     let pen = c.params().static_penetration(per_point);
