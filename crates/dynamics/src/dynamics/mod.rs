@@ -13,6 +13,7 @@ use crate::kinematics::{
 };
 use crate::spatial::Wrench;
 use crate::{Data, DynamicsError, Model};
+pub(crate) use crba::ColumnAncestors;
 use nalgebra::{DMatrix, DVector};
 
 /// Forward-dynamics method.
@@ -182,11 +183,13 @@ pub fn forward_dynamics_solve<'d>(
     body_forces(model, data, fext);
     rnea::rnea_from_kinematics(model, data, None, true);
     crba::crba(model, data);
-    data.factor.copy_from(&data.mass);
+    data.factor
+        .as_mut_slice()
+        .copy_from_slice(data.mass.as_slice());
     data.ddq.copy_from(tau);
     data.ddq -= &data.nle;
     if algo == Algorithm::Crba {
-        solve::cholesky_in_place(&mut data.factor)?;
+        solve::cholesky_in_place(&mut data.factor, &data.mass)?;
         solve::cholesky_solve_in_place(&data.factor, &mut data.ddq);
     } else {
         solve::ltl_in_place(&mut data.factor, &model.dof_ancestors, &data.mass)?;
