@@ -56,19 +56,61 @@ fn factor_panel(
 }
 
 /// Subtracts `L_j L_j^T` of the four panel columns `k..k + 4` from every later column `j`
-/// (rows `j..n`, the lower triangle).
+/// (rows `j..n`, the lower triangle), two target columns per pass over the panel rows so that
+/// each load of the panel serves eight products.
 fn update_trailing(a: &mut [f64], n: usize, k: usize) {
     let (panel, rest) = a.split_at_mut((k + PANEL) * n);
     let c = |t: usize| &panel[(k + t) * n..(k + t + 1) * n];
     let p = [c(0), c(1), c(2), c(3)];
-    for (jj, col_j) in rest.chunks_exact_mut(n).enumerate() {
-        let j = k + PANEL + jj;
-        let l = [p[0][j], p[1][j], p[2][j], p[3][j]];
-        rank4(
-            &mut col_j[j..],
-            &l,
-            [&p[0][j..], &p[1][j..], &p[2][j..], &p[3][j..]],
+    let below = |r: usize| [&p[0][r..], &p[1][r..], &p[2][r..], &p[3][r..]];
+    let at = |j: usize| [p[0][j], p[1][j], p[2][j], p[3][j]];
+    let mut pairs = rest.chunks_exact_mut(2 * n);
+    let mut j = k + PANEL;
+    for pair in &mut pairs {
+        let (col_a, col_b) = pair.split_at_mut(n);
+        let (la, lb) = (at(j), at(j + 1));
+        col_a[j] -= (la[0] * p[0][j] + la[1] * p[1][j]) + (la[2] * p[2][j] + la[3] * p[3][j]);
+        rank4_pair(
+            &mut col_a[j + 1..],
+            &mut col_b[j + 1..],
+            &la,
+            &lb,
+            below(j + 1),
         );
+        j += 2;
+    }
+    let last = pairs.into_remainder();
+    if !last.is_empty() {
+        rank4(&mut last[j..], &at(j), below(j));
+    }
+}
+
+/// [`rank4`] on two target slices with their own coefficients and the same sources.
+#[inline]
+fn rank4_pair(ya: &mut [f64], yb: &mut [f64], la: &[f64; 4], lb: &[f64; 4], x: [&[f64]; 4]) {
+    let sub = |y: f64, l: &[f64; 4], x: [f64; 4]| {
+        y - l[0] * x[0] - l[1] * x[1] - l[2] * x[2] - l[3] * x[3]
+    };
+    let mut blocks = ya.chunks_exact_mut(4).zip(yb.chunks_exact_mut(4));
+    let mut i = 0;
+    for (ba, bb) in &mut blocks {
+        let (x0, x1, x2, x3) = (
+            &x[0][i..i + 4],
+            &x[1][i..i + 4],
+            &x[2][i..i + 4],
+            &x[3][i..i + 4],
+        );
+        for t in 0..4 {
+            let xs = [x0[t], x1[t], x2[t], x3[t]];
+            ba[t] = sub(ba[t], la, xs);
+            bb[t] = sub(bb[t], lb, xs);
+        }
+        i += 4;
+    }
+    for r in i..ya.len().min(yb.len()) {
+        let xs = [x[0][r], x[1][r], x[2][r], x[3][r]];
+        ya[r] = sub(ya[r], la, xs);
+        yb[r] = sub(yb[r], lb, xs);
     }
 }
 
