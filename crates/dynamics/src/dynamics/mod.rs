@@ -182,16 +182,17 @@ pub fn forward_dynamics_solve<'d>(
     data.dense_workspace(true)?;
     body_forces(model, data, fext);
     rnea::rnea_from_kinematics(model, data, None, true);
-    crba::crba(model, data);
-    data.factor
-        .as_mut_slice()
-        .copy_from_slice(data.mass.as_slice());
     data.ddq.copy_from(tau);
     data.ddq -= &data.nle;
     if algo == Algorithm::Crba {
+        crba::crba(model, data, crba::Clear::All);
+        let (mass, factor) = (data.mass.as_slice(), data.factor.as_mut_slice());
+        factor.copy_from_slice(mass);
         solve::cholesky_in_place(&mut data.factor, &data.mass)?;
         solve::cholesky_solve_in_place(&data.factor, &mut data.ddq);
     } else {
+        crba::crba(model, data, crba::Clear::Pattern);
+        solve::copy_pattern(&data.mass, &model.dof_ancestors, &mut data.factor);
         solve::ltl_in_place(&mut data.factor, &model.dof_ancestors, &data.mass)?;
         solve::ltl_solve_in_place(&data.factor, &model.dof_ancestors, &mut data.ddq);
     }
@@ -240,7 +241,7 @@ pub fn mass_matrix<'d>(
     }
     take_fault(data)?;
     data.dense_workspace(false)?;
-    crba::crba(model, data);
+    crba::crba(model, data, crba::Clear::All);
     check::result("mass matrix", data.mass.as_slice())?;
     Ok(&data.mass)
 }

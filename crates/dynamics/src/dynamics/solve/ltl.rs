@@ -8,6 +8,23 @@ use crate::model::DofAncestors;
 use crate::DynamicsError;
 use nalgebra::{DMatrix, DVector};
 
+/// Copies the entries [`ltl_in_place`] reads, the diagonal and the upper triangle on the
+/// pattern (`(j, k)`, `j` an ancestor of `k`), from `m` into `out` (same size): the
+/// factorisation's input without a copy of all `n^2` entries.
+pub(crate) fn copy_pattern(m: &DMatrix<f64>, ancestors: &DofAncestors, out: &mut DMatrix<f64>) {
+    let n = m.nrows();
+    if n == 0 {
+        return; // no coordinates: `chunks_exact` needs a non-zero size
+    }
+    let columns = (m.as_slice().chunks_exact(n)).zip(out.as_mut_slice().chunks_exact_mut(n));
+    for (k, (from, to)) in columns.enumerate() {
+        to[k] = from[k];
+        for r in ancestors.runs_of(k) {
+            to[r.clone()].copy_from_slice(&from[r.clone()]);
+        }
+    }
+}
+
 /// Reverse sparse factorisation `M = L^T L` in place. `L(k, j)` (`j <= k`) is stored
 /// transposed, at `(j, k)` in the upper triangle, so that each row of `L` is one contiguous
 /// column; the diagonal holds `1 / L_kk`, so that the solve multiplies on its serial chains.

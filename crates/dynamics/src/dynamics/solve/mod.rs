@@ -6,7 +6,7 @@ mod dense;
 mod ltl;
 
 pub(crate) use dense::{cholesky_in_place, cholesky_solve_in_place};
-pub(crate) use ltl::{ltl_in_place, ltl_solve_in_place};
+pub(crate) use ltl::{copy_pattern, ltl_in_place, ltl_solve_in_place};
 
 use crate::DynamicsError;
 
