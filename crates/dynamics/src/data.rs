@@ -185,8 +185,9 @@ pub struct Data {
     /// Generalized forces (output of inverse dynamics).
     pub tau: DVector<f64>,
     /// Joint-space mass matrix (output of [`crate::mass_matrix`] and of CRBA forward dynamics;
-    /// sparse forward dynamics rewrites only the entries of the tree pattern, the others being
-    /// zero by structure and never written by this crate); for `nv > 256` empty (0 x 0)
+    /// on large sparse trees, e.g. Dill(8) and up, sparse forward dynamics rewrites only the
+    /// entries of the tree pattern, the others being zero by structure and never written by
+    /// this crate); for `nv > 256` empty (0 x 0)
     /// until a call that computes it.
     pub mass: DMatrix<f64>,
     /// Velocity/gravity/external-force bias `RNEA(q, v, 0)` used by the O(n^3) methods.

@@ -191,8 +191,14 @@ pub fn forward_dynamics_solve<'d>(
         solve::cholesky_in_place(&mut data.factor, &data.mass)?;
         solve::cholesky_solve_in_place(&data.factor, &mut data.ddq);
     } else {
-        crba::crba(model, data, crba::Clear::Pattern);
-        solve::copy_pattern(&data.mass, &model.dof_ancestors, &mut data.factor);
+        let clear = data.column_ancestors.sparse_clear(model.nv);
+        crba::crba(model, data, clear);
+        if clear == crba::Clear::Pattern {
+            solve::copy_pattern(&data.mass, &model.dof_ancestors, &mut data.factor);
+        } else {
+            let (mass, factor) = (data.mass.as_slice(), data.factor.as_mut_slice());
+            factor.copy_from_slice(mass);
+        }
         solve::ltl_in_place(&mut data.factor, &model.dof_ancestors, &data.mass)?;
         solve::ltl_solve_in_place(&data.factor, &model.dof_ancestors, &mut data.ddq);
     }
