@@ -38,3 +38,36 @@ proptest! {
         }
     }
 }
+
+/// Dill(8) (256 DoF) is sparse enough for the pattern-only clear: after a dense call filled
+/// all of `M` and a sparse call at another state rewrote its pattern, `M` is the mass matrix
+/// of the second state, and both solves agree with O(n).
+#[test]
+fn pattern_clear_on_dill() {
+    use biped_dynamics::dill::{dill, dill_test_state};
+    let model = dill(8).unwrap();
+    let (q, v) = dill_test_state(&model);
+    let tau = nalgebra::DVector::zeros(model.nv());
+    let q2 = q.map(|x| x * 0.7 + 0.1);
+    let mut data = Data::new(&model);
+    let on = forward_dynamics(&model, &mut data, &q2, &v, &tau, None, Algorithm::On)
+        .unwrap()
+        .clone();
+    forward_dynamics(&model, &mut data, &q, &v, &tau, None, Algorithm::Crba).unwrap();
+    let sparse = forward_dynamics(&model, &mut data, &q2, &v, &tau, None, Algorithm::Sparse)
+        .unwrap()
+        .clone();
+    assert!(rel_diff(&sparse, &on) < 1e-9, "{}", rel_diff(&sparse, &on));
+    let left = data.mass.clone();
+    let m = mass_matrix(&model, &mut data, &q2).unwrap();
+    assert!((&left - m).amax() <= 1e-12 * m.amax());
+    let zeros = m.iter().filter(|x| **x == 0.0).count();
+    assert!(
+        zeros > model.nv() * model.nv() / 2,
+        "{zeros} structural zeros"
+    );
+    assert!(left
+        .iter()
+        .zip(m.iter())
+        .all(|(l, x)| *x != 0.0 || *l == 0.0));
+}
