@@ -2,6 +2,7 @@
 
 use crate::centroidal::MomentumTable;
 use crate::dynamics::on::OneDofStep;
+use crate::dynamics::ColumnAncestors;
 use crate::kinematics::{fd_step_kind, step_kind, StepKind};
 use crate::mechanism::ankle::AnkleLoop;
 use crate::mechanism::knee::KneeLoopCache;
@@ -9,7 +10,9 @@ use crate::mechanism::{AxialMotion, MechanismError};
 use crate::model::coupling::Mechanism;
 use crate::model::joint::{quaternion_jacobian, Joint};
 use crate::model::{Body, JointModel};
-use crate::spatial::{ArticulatedInertia, Axis, Force, Motion, RigidInertia, SpatialTransform};
+use crate::spatial::{
+    ArticulatedInertia, Axis, CompositeInertia, Force, Motion, RigidInertia, SpatialTransform,
+};
 use crate::subsystem::axial::{axial_members, carriers, AxialKind, AxialMember, Carried};
 use crate::subsystem::link::{link_rotor_subsystems, LinkRotors};
 use crate::subsystem::MAX_SUBSYSTEM_DOF;
@@ -97,12 +100,14 @@ pub struct Data {
     pub(crate) p6: Vec<Vector6<f64>>,
     /// Net body forces of the RNEA backward pass.
     pub(crate) fnet: Vec<Force>,
-    /// Composite rigid-body inertias of CRBA (world axes, about body 0's origin).
-    pub(crate) ic: Vec<ArticulatedInertia>,
-    /// Jacobian columns `J_i` of all bodies in world axes about body 0's origin (CRBA).
+    /// Composite rigid-body inertias of CRBA (world axes, about the world origin).
+    pub(crate) ic: Vec<CompositeInertia>,
+    /// Jacobian columns `J_i` of all bodies in world axes about the world origin (CRBA).
     pub(crate) col_world: Vec<Motion>,
     /// Offset of each body's columns in `col_world`.
     pub(crate) col_offset: Vec<usize>,
+    /// Ancestor columns of every body and the coordinate of every column (CRBA).
+    pub(crate) column_ancestors: ColumnAncestors,
     /// Member transforms `C-hat_j` from the sub-system parent (2.77), per body; only for
     /// members not attached to the parent (the others' `C-hat_j = C_j` is read from `x`).
     pub(crate) cbar: Vec<SpatialTransform>,
@@ -179,7 +184,10 @@ pub struct Data {
     pub ddq: DVector<f64>,
     /// Generalized forces (output of inverse dynamics).
     pub tau: DVector<f64>,
-    /// Joint-space mass matrix (output of [`crate::mass_matrix`]); for `nv > 256` empty (0 x 0)
+    /// Joint-space mass matrix (output of [`crate::mass_matrix`] and of CRBA forward dynamics;
+    /// on large sparse trees, e.g. Dill(8) and up, sparse forward dynamics rewrites only the
+    /// entries of the tree pattern, the others being zero by structure and never written by
+    /// this crate); for `nv > 256` empty (0 x 0)
     /// until a call that computes it.
     pub mass: DMatrix<f64>,
     /// Velocity/gravity/external-force bias `RNEA(q, v, 0)` used by the O(n^3) methods.
@@ -320,8 +328,9 @@ impl Data {
             pi6: vec![Matrix6::zeros(); n],
             p6: vec![Vector6::zeros(); n],
             fnet: vec![Force::zero(); n],
-            ic: vec![ArticulatedInertia::zero(); n],
+            ic: vec![CompositeInertia::default(); n],
             col_world: vec![Motion::zero(); col_offset.last().copied().unwrap_or(0)],
+            column_ancestors: ColumnAncestors::new(model, &col_offset),
             col_offset: col_offset[..n].to_vec(),
             cbar: vec![SpatialTransform::identity(); n],
             jbar: vec![[Motion::zero(); MAX_SUBSYSTEM_DOF]; n],

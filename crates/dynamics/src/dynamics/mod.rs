@@ -13,6 +13,7 @@ use crate::kinematics::{
 };
 use crate::spatial::Wrench;
 use crate::{Data, DynamicsError, Model};
+pub(crate) use crba::ColumnAncestors;
 use nalgebra::{DMatrix, DVector};
 
 /// Forward-dynamics method.
@@ -181,14 +182,23 @@ pub fn forward_dynamics_solve<'d>(
     data.dense_workspace(true)?;
     body_forces(model, data, fext);
     rnea::rnea_from_kinematics(model, data, None, true);
-    crba::crba(model, data);
-    data.factor.copy_from(&data.mass);
     data.ddq.copy_from(tau);
     data.ddq -= &data.nle;
     if algo == Algorithm::Crba {
-        solve::cholesky_in_place(&mut data.factor)?;
+        crba::crba(model, data, crba::Clear::All);
+        let (mass, factor) = (data.mass.as_slice(), data.factor.as_mut_slice());
+        factor.copy_from_slice(mass);
+        solve::cholesky_in_place(&mut data.factor, &data.mass)?;
         solve::cholesky_solve_in_place(&data.factor, &mut data.ddq);
     } else {
+        let clear = data.column_ancestors.sparse_clear(model.nv);
+        crba::crba(model, data, clear);
+        if clear == crba::Clear::Pattern {
+            solve::copy_pattern(&data.mass, &model.dof_ancestors, &mut data.factor);
+        } else {
+            let (mass, factor) = (data.mass.as_slice(), data.factor.as_mut_slice());
+            factor.copy_from_slice(mass);
+        }
         solve::ltl_in_place(&mut data.factor, &model.dof_ancestors, &data.mass)?;
         solve::ltl_solve_in_place(&data.factor, &model.dof_ancestors, &mut data.ddq);
     }
@@ -237,7 +247,7 @@ pub fn mass_matrix<'d>(
     }
     take_fault(data)?;
     data.dense_workspace(false)?;
-    crba::crba(model, data);
+    crba::crba(model, data, crba::Clear::All);
     check::result("mass matrix", data.mass.as_slice())?;
     Ok(&data.mass)
 }

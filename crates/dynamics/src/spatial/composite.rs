@@ -20,7 +20,9 @@ pub struct CompositeInertia {
 impl CompositeInertia {
     /// A body's inertia in world axes about the world origin, for a body frame with rotation
     /// `rot` (body axes in world coordinates) and origin `pos` (Steiner: (2.21) at `c`).
-    #[inline]
+    // Always inlined: returned through the stack, its scalar stores stalled the vector loads
+    // that copied it into the CRBA's composite list (store forwarding).
+    #[inline(always)]
     pub fn from_body(inertia: &RigidInertia, rot: &Matrix3<f64>, pos: &Vector3<f64>) -> Self {
         let m = inertia.mass();
         let c = rot * inertia.com() + pos;
