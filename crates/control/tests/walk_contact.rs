@@ -59,3 +59,21 @@ fn a_short_walk_keeps_contact_and_reports_its_largest_lift() {
     assert!(v.value <= largest + 1e-12, "{v:?}");
     assert!(run.summary.verdicts.violations().is_empty());
 }
+
+/// Steps of 0.5 m at 0.8 s stay within the IK's reach with every arm method: tasks tracked,
+/// joints inside their ranges, no self-collision. (They do not keep the contact verdict yet:
+/// the plan lifts the rear toe by up to ~9 mm at the first step change, see docs/walking.md.)
+#[test]
+fn half_metre_steps_are_tracked_inside_the_joint_ranges() {
+    let lola = lola::build(LolaType::Type2).unwrap();
+    let params = walk_pattern_params(&lola, 6, 0.5, 0.8).unwrap();
+    let pattern = WalkingPattern::generate(&params).unwrap();
+    for method in Method::ALL {
+        let run = run_walk(&lola, &pattern, method, WalkParams::default()).unwrap();
+        let v = &run.summary.verdicts;
+        assert!(v.tracking.kept, "{method}: {:?}", v.tracking);
+        assert!(v.joint_limits.kept, "{method}: {:?}", v.joint_limits);
+        assert!(v.self_collision.kept, "{method}: {:?}", v.self_collision);
+        assert!(run.summary.max_foot_lift > 0.0, "{method}");
+    }
+}
