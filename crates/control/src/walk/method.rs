@@ -118,9 +118,9 @@ pub struct WalkParams {
     pub task_tolerance: f64,
     /// Largest height \[m] above the ground of a planned contact point of a foot the
     /// pattern has on the ground, with which the walk still keeps its contacts (the contact
-    /// verdict, [`super::contact`]). Default 5 mm: the pattern's double supports still lift
-    /// a supporting foot by up to ~3.7 mm on the default walk (the IK's compromise while
-    /// the front foot rolls flat and the rear heel has not lifted yet).
+    /// verdict, [`super::contact`]). Default 5 mm: the double supports of the default walk
+    /// still lift a supporting foot by up to 3.7 mm, the IK lagging its foot tasks under the
+    /// solve's regularisation ([`crate::ik::LimitSettings::regularisation`]; 0.5 mm at 1e-4).
     pub contact_tolerance: f64,
 }
 
