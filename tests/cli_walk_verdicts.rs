@@ -163,3 +163,48 @@ fn a_hopping_dynamic_walk_violates_contact() {
     assert!(err.contains("warning: dynamic walk: contact"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The contact verdict: three steps of 0.5 m with the arms held still lift the rear foot's toe
+/// 8.7 mm off the ground at the first step change while the IK still tracks its tasks; the run
+/// exits 1 with one line naming the foot, the amount and the time, `summary.json` has the
+/// verdict and the method's CSV the lift per cycle.
+#[test]
+fn a_plan_lifting_a_supporting_foot_violates_contact() {
+    let dir = std::env::temp_dir().join(format!("biped_verdict_lift_{}", std::process::id()));
+    let out = Command::new(env!("CARGO_BIN_EXE_biped"))
+        .args([
+            "walk",
+            "--steps",
+            "3",
+            "--step-length",
+            "0.5",
+            "--method",
+            "none",
+        ])
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    for part in [
+        "none walk: contact: the right toe",
+        "mm above it at t = ",
+        "--allow-violations",
+    ] {
+        assert!(err.contains(part), "`{part}` missing in: {err}");
+    }
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("tracking: kept"), "{stdout}");
+    assert!(stdout.contains("contact: LIFTED by none"), "{stdout}");
+    let s = summary(&dir);
+    let contact = &s["none"]["verdicts"]["contact"];
+    assert_eq!(contact["kept"], false, "{contact}");
+    let lift = contact["value"].as_f64().unwrap();
+    assert!(lift > 0.005 && lift <= s["none"]["max_foot_lift"].as_f64().unwrap());
+    let csv = std::fs::read_to_string(dir.join("none.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    assert!(header.contains(&"foot_lift") && header.contains(&"task_error"));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -59,9 +59,9 @@ pub struct WalkArgs {
     #[arg(long, value_name = "MU", default_value_t = 0.8, allow_hyphen_values = true,
           value_parser = |s: &str| range::walk::FRICTION.parse(s))]
     friction: f64,
-    /// Report a walk that leaves the joint ranges, lets segments interpenetrate or needs more
-    /// friction than the ground has as a warning and exit 0 (for exploration); by default
-    /// such a walk exits non-zero.
+    /// Report a walk that leaves the joint ranges, lets segments interpenetrate, needs more
+    /// friction than the ground has or lifts a supporting foot as a warning and exit 0 (for
+    /// exploration); by default such a walk exits non-zero.
     #[arg(long)]
     allow_violations: bool,
     /// Output directory (default `out/walk`).

@@ -1,5 +1,6 @@
 //! What `biped walk` prints: what was walked, one block per arm method (what the method does,
-//! then its numbers), the verdicts on joint limits and self-collision, and the dynamic walk.
+//! then its numbers), the verdicts (tracking, contact, joint limits, self-collision, friction),
+//! and the dynamic walk.
 
 use super::Walk;
 use super::WalkArgs;
@@ -61,11 +62,13 @@ type Check = (
     &'static str,
 );
 
-/// Whether the walks kept the joint ranges, stayed clear of self-collision and inside the
-/// friction cone: one line per check over all methods.
+/// Whether the walks tracked their tasks, kept the supporting feet down, kept the joint
+/// ranges, stayed clear of self-collision and inside the friction cone: one line per check
+/// over all methods.
 fn verdicts(runs: &[WalkRun]) -> io::Result<()> {
-    let checks: [Check; 4] = [
+    let checks: [Check; 5] = [
         ("tracking", |v| &v.tracking, "kept", "MISSED"),
+        ("contact", |v| &v.contact, "kept", "LIFTED"),
         ("joint limits", |v| &v.joint_limits, "kept", "LEFT"),
         (
             "self-collision",
@@ -83,7 +86,9 @@ fn verdicts(runs: &[WalkRun]) -> io::Result<()> {
             .collect();
         let worst = runs.iter().map(|r| (pick(&r.summary.verdicts), r.method));
         let worst = match name {
-            "friction" | "tracking" => worst.max_by(|a, b| a.0.value.total_cmp(&b.0.value)),
+            "friction" | "tracking" | "contact" => {
+                worst.max_by(|a, b| a.0.value.total_cmp(&b.0.value))
+            }
             _ => worst.min_by(|a, b| a.0.value.total_cmp(&b.0.value)),
         };
         let Some((v, method)) = worst else {
@@ -93,6 +98,11 @@ fn verdicts(runs: &[WalkRun]) -> io::Result<()> {
             "joint limits" => format!("smallest margin {:.3} rad, {}", v.value, v.at),
             "self-collision" => format!("smallest segment distance {:.4} m, {}", v.value, v.at),
             "tracking" => format!("largest task error {:.4}", v.value),
+            "contact" => format!(
+                "supporting feet at most {:.2} mm above the ground, {}",
+                1e3 * v.value,
+                v.at
+            ),
             _ => format!("largest use of the friction limit {:.0} %", 100.0 * v.value),
         };
         match failed.is_empty() {

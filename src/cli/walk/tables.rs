@@ -114,13 +114,15 @@ pub fn dynamic_plots(rec: &Recorder, out: &Path) -> Result<(), RecordError> {
 }
 
 /// One method's momentum, torque, distance and friction signals of cycle `k`.
-fn series_row(s: &WalkSeries, k: usize) -> [(&'static str, f64); 5] {
+fn series_row(s: &WalkSeries, k: usize) -> [(&'static str, f64); 7] {
     [
         ("L_z", s.lz[k]),
         ("dL_z", s.dlz[k]),
         ("tau_z", s.tau_z[k]),
         ("min_distance", s.min_distance[k]),
         ("friction_usage", s.friction_usage[k]),
+        ("task_error", s.task_error[k]),
+        ("foot_lift", s.foot_lift[k]),
     ]
 }
 

@@ -116,6 +116,12 @@ pub struct WalkParams {
     /// Largest norm of the IK's task error (m for positions, rad for orientations) with which
     /// the walk still counts as the planned one (the tracking verdict).
     pub task_tolerance: f64,
+    /// Largest height \[m] above the ground of a planned contact point of a foot the
+    /// pattern has on the ground, with which the walk still keeps its contacts (the contact
+    /// verdict, [`super::contact`]). Default 5 mm: the double supports of the default walk
+    /// still lift a supporting foot by up to 3.7 mm, the IK lagging its foot tasks under the
+    /// solve's regularisation ([`crate::ik::LimitSettings::regularisation`]; 0.5 mm at 1e-4).
+    pub contact_tolerance: f64,
 }
 
 impl Default for WalkParams {
@@ -137,6 +143,7 @@ impl Default for WalkParams {
             limits: LimitSettings::default(),
             friction: biped_sim::contact::ContactParams::default().friction,
             task_tolerance: 0.02,
+            contact_tolerance: 5e-3,
             arm_pose: [0.0, 0.1, super::posture::WALK_ELBOW],
         }
     }
@@ -157,6 +164,7 @@ impl WalkParams {
             ("arm_lock_weight", self.arm_lock_weight),
             ("friction", self.friction),
             ("task_tolerance", self.task_tolerance),
+            ("contact_tolerance", self.contact_tolerance),
             ("dt", dt),
         ];
         for (name, v) in pos {

@@ -11,6 +11,7 @@
 //!   smallest SSV distance, joint-limit margin, ground wrench.
 //! - [`friction`]: whether the ground can supply that wrench (friction cone and free moment).
 //! - [`trajectory`]: [`Trajectory`], the full planned motion for replay.
+//! - [`contact`]: [`SupportCheck`], how far the planned motion lifts a supporting foot.
 //! - [`verdict`]: [`WalkVerdicts`], where and when a walk came closest to each limit.
 //! - [`run`]: [`run_walk`], a whole walk with time series and a [`WalkSummary`].
 //! - [`dynamic`]: [`run_dynamic_walk`], the walk tracked by joint controllers in the contact
@@ -45,6 +46,7 @@
 //!   how often). The compensation term is shortened to stay in the box.
 //! - The IK runs `settle_time` on the first sample before the walk.
 
+pub mod contact;
 pub mod controller;
 pub mod dynamic;
 mod error;
@@ -58,6 +60,7 @@ mod targets;
 pub mod trajectory;
 pub mod verdict;
 
+pub use contact::{FootLift, SupportCheck};
 pub use controller::{CycleInfo, WalkController};
 pub use dynamic::{
     run_dynamic_walk, run_dynamic_walk_robot, DynamicRobot, DynamicWalkParams, DynamicWalkRun,

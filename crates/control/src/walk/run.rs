@@ -1,5 +1,6 @@
 //! A whole walk with one method: time series of the metrics and their summary (Fig. 7.1/7.4).
 
+use super::contact::SupportCheck;
 use super::controller::WalkController;
 use super::error::{model_err, WalkError};
 use super::evaluate::{CycleMetrics, Evaluator};
@@ -48,6 +49,9 @@ pub struct WalkSeries {
     pub friction_usage: Vec<f64>,
     /// Centre of pressure (ZMP) of the ground wrench \[m].
     pub zmp: Vec<[f64; 2]>,
+    /// Height of the highest planned contact point of a supporting foot above the ground
+    /// ([`super::contact`]; 0 without support) \[m].
+    pub foot_lift: Vec<f64>,
     /// Joints the IK held at their limit box in each cycle.
     pub limited: Vec<usize>,
     /// Names of the recorded joints ([`WalkRobot::recorded`]; Lola: [`RECORDED_JOINTS`]).
@@ -77,6 +81,8 @@ pub struct WalkSummary {
     pub min_joint_margin: f64,
     /// Largest task error norm over the walk.
     pub max_task_error: f64,
+    /// Largest height of a planned contact point of a supporting foot above the ground \[m].
+    pub max_foot_lift: f64,
     /// Cycles in which the IK held at least one joint at its limit box.
     pub limited_cycles: usize,
     /// Largest friction usage of the ground wrench (kept: `<= 1`).
@@ -161,6 +167,7 @@ pub fn run_walk_robot(
     };
     let mut trajectory = Trajectory::with_capacity(robot.model.q_names(), n);
     let soles = eval.soles();
+    let support = SupportCheck::new(robot, pattern.params().foot);
     for sample in pattern.iter() {
         let start = Instant::now();
         let info = ctrl.cycle(sample, dt)?;
@@ -170,6 +177,8 @@ pub fn run_walk_robot(
         verdicts.tracking(sample.t, info.error_norm, params.task_tolerance, || {
             held_joints(robot, &ctrl)
         });
+        let lift = record_contact(&mut verdicts, &support, &ctrl, sample, &params);
+        s.foot_lift.push(lift);
         s.t.push(sample.t);
         s.lz.push(m.lz);
         s.dlz.push(m.dlz);
@@ -217,6 +226,24 @@ fn record_verdicts(
     });
 }
 
+/// Records the lift of the supporting feet of the cycle `ctrl` has just run and returns it
+/// \[m] (0 without support in the pattern).
+fn record_contact(
+    v: &mut WalkVerdicts,
+    support: &SupportCheck,
+    ctrl: &WalkController,
+    sample: &PatternSample,
+    params: &WalkParams,
+) -> f64 {
+    let lift = support.lift(ctrl.kinematics().0, sample);
+    if let Some(l) = lift {
+        v.contact(sample.t, l.height, params.contact_tolerance, || {
+            l.describe()
+        });
+    }
+    lift.map_or(0.0, |l| l.height)
+}
+
 /// The joints the IK held at their limit box in the last cycle, for the tracking verdict.
 fn held_joints(robot: &WalkRobot, ctrl: &WalkController) -> String {
     let fixed = ctrl.limiter().fixed();
@@ -254,6 +281,7 @@ fn summarize(s: &WalkSeries, cycles: usize, verdicts: WalkVerdicts) -> WalkSumma
         ik_us_p99: pct(0.99),
         min_joint_margin: min(&s.joint_margin),
         max_task_error: peak(&s.task_error),
+        max_foot_lift: s.foot_lift.iter().copied().fold(0.0, f64::max),
         limited_cycles: s.limited.iter().filter(|&&n| n > 0).count(),
         peak_friction_usage: s.friction_usage.iter().copied().fold(0.0, f64::max),
         cycles,

@@ -41,6 +41,10 @@ pub struct WalkVerdicts {
     /// Largest task error of the IK (kept: `<=` [`super::WalkParams::task_tolerance`]); `at`
     /// names the joints the IK held at their limits then.
     pub tracking: Verdict,
+    /// Largest height above the ground of a planned contact point of a supporting foot \[m]
+    /// ([`super::contact`]; kept: `<=` [`super::WalkParams::contact_tolerance`]); `at` names
+    /// the foot and its supporting part.
+    pub contact: Verdict,
     /// Coulomb coefficient the friction was checked against.
     pub mu: f64,
 }
@@ -68,6 +72,7 @@ impl WalkVerdicts {
             self_collision: Verdict::empty(f64::INFINITY),
             friction: Verdict::empty(0.0),
             tracking: Verdict::empty(0.0),
+            contact: Verdict::empty(f64::NEG_INFINITY),
             mu,
         }
     }
@@ -104,7 +109,18 @@ impl WalkVerdicts {
         }
     }
 
-    /// The limits not kept, one line each naming what, where, when and by how much.
+    /// Records the lift `lift` \[m] of the supporting foot part `part` at `t` against
+    /// `tolerance` (non-finite: a violation).
+    pub fn contact(&mut self, t: f64, lift: f64, tolerance: f64, part: impl FnOnce() -> String) {
+        let v = &mut self.contact;
+        if lift > v.value || (lift.is_nan() && v.kept) {
+            (v.value, v.t, v.at, v.kept) = (lift, t, part(), v.kept && lift <= tolerance);
+        }
+    }
+
+    /// The limits not kept, one line each naming what, where, when and by how much. A walk
+    /// the IK does not track lifts its feet as a consequence: then the tracking line stands
+    /// for the contact verdict too (which `summary.json` still reports).
     pub fn violations(&self) -> Vec<Violation> {
         let mut out = Vec::new();
         let (j, c, f) = (&self.joint_limits, &self.self_collision, &self.friction);
@@ -115,6 +131,18 @@ impl WalkVerdicts {
                 text: format!(
                     "the IK misses its tasks by {:.4} (m or rad) at t = {:.3} s ({})",
                     k.value, k.t, k.at
+                ),
+            });
+        }
+        let s = &self.contact;
+        if !s.kept && k.kept {
+            out.push(Violation {
+                quantity: "contact",
+                text: format!(
+                    "the {} planned on the ground is {:.1} mm above it at t = {:.3} s",
+                    s.at,
+                    1e3 * s.value,
+                    s.t
                 ),
             });
         }
@@ -179,6 +207,21 @@ mod tests {
             lines[0].starts_with("joint limits: knee left its range by 0.0100 rad at t = 0.200 s")
         );
         assert!(lines[1].contains("right foot needs 1.30 times the friction mu = 0.8"));
+    }
+
+    #[test]
+    fn a_lifted_supporting_foot_is_one_line_in_mm() {
+        let mut v = WalkVerdicts::new(0.8);
+        v.contact(1.0, 0.0004, 0.001, || "left sole".into());
+        assert!(v.contact.kept && v.violations().is_empty());
+        v.contact(1.715, 0.0045, 0.001, || "right toe".into());
+        v.contact(1.8, 0.002, 0.001, || "left sole".into());
+        assert!(!v.contact.kept);
+        let lines: Vec<String> = v.violations().iter().map(|x| x.to_string()).collect();
+        assert_eq!(
+            lines,
+            ["contact: the right toe planned on the ground is 4.5 mm above it at t = 1.715 s"]
+        );
     }
 
     #[test]
