@@ -24,7 +24,7 @@ use offset::Subtree;
 pub struct TaskHandle(pub usize);
 
 /// Generic tasks stacked in insertion order (soft joint-space tasks last); implements
-/// [`TaskMap`].
+/// [`crate::ik::TaskMap`].
 #[derive(Debug, Clone)]
 pub struct TaskStack {
     model: Model,

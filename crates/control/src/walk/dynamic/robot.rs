@@ -160,11 +160,11 @@ fn urdf_feet(robot: &Robot) -> Result<UrdfFeet, WalkError> {
 }
 
 /// Roll stiffness of the soles on the ground over the robot's toppling stiffness `m g h` that
-/// [`sole_contact`] asks for (at 1x a described G1 falls sideways over its 5.5 cm wide sole, at
+/// `sole_contact` asks for (at 1x a described G1 falls sideways over its 5.5 cm wide sole, at
 /// 2x after 8 steps, at 4x it walks).
 pub const SOLE_ROLL_MARGIN: f64 = 4.0;
 
-/// Damping ratio of a foot's vertical mode on the contact points ([`sole_contact`]).
+/// Damping ratio of a foot's vertical mode on the contact points (`sole_contact`).
 pub const FOOT_DAMPING_RATIO: f64 = 0.6;
 
 /// Largest `h omega` of a foot's vertical mode at the 1 ms control period (RK4 is stable up
