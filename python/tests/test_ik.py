@@ -80,7 +80,7 @@ def test_offset_of_a_hand_from_the_com_in_yawed_axes(g1):
     ik = biped.Ik(str(G1))
     c, s = np.cos(0.4), np.sin(0.4)
     axes = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-    hand = "left_rubber_hand"
+    hand = "left_wrist_yaw_link"
 
     def offset(q):
         return axes.T @ (model.frame_pose(q, hand)[:3, 3] - model.com(q))
