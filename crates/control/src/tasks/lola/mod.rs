@@ -140,8 +140,8 @@ impl LolaTasks {
         self.activation
             .iter_mut()
             .for_each(|a| *a = Activation::new(true, 0.0));
-        let (mut err, mut jac) = (DVector::zeros(self.max_rows()), DMatrix::zeros(0, 0));
-        jac.resize_mut(self.max_rows(), self.nv(), 0.0);
+        let (rows, nv) = (self.max_rows(), self.nv());
+        let (mut err, mut jac) = (DVector::zeros(rows), DMatrix::zeros(rows, nv));
         let result = self.error_and_jacobian(q, &mut err, &mut jac);
         self.activation = all_on;
         result?;
