@@ -5,7 +5,7 @@
 //!
 //! Run with `cargo run --release --example urdf_ik`.
 
-use biped_control::ik::Ik;
+use biped_control::whole_body::Ik;
 use biped_dynamics::urdf::{load_file, UrdfOptions};
 use biped_dynamics::{center_of_mass, update_placements, Data};
 use nalgebra::Translation3;

@@ -1,11 +1,11 @@
-//! `biped.Ik`: the generic whole-body IK (`biped_control::ik::Ik`) on a URDF, with the URDF's
+//! `biped.Ik`: the generic whole-body IK (`biped_control::whole_body::Ik`) on a URDF, with the URDF's
 //! joint position and velocity limits kept by default: frame, CoM, posture and joint tasks
 //! by name, moving targets, and one differential step at a time.
 
 use crate::error::{biped_err, guard};
 use crate::model::urdf_error;
-use biped_control::ik::Ik;
 use biped_control::tasks::{TaskHandle, TaskKind};
+use biped_control::whole_body::Ik;
 use biped_dynamics::urdf::{load_file, UrdfOptions};
 use nalgebra::{DVector, Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
 use numpy::{AllowTypeChange, PyArray1, PyArrayLikeDyn};
@@ -13,7 +13,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::path::PathBuf;
 
-/// Differential IK on a URDF (see `biped_control::ik::Ik`).
+/// Differential IK on a URDF (see `biped_control::whole_body::Ik`).
 #[pyclass(name = "Ik", module = "biped._native")]
 pub struct PyIk {
     ik: Ik,

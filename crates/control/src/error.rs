@@ -1,6 +1,5 @@
 //! Typed errors of the inverse-kinematics and task modules (thesis 4.2-4.5).
 
-use crate::ik::position::StopReason;
 use thiserror::Error;
 
 /// Errors of the IK solvers, the weight matrix and the task description.
@@ -52,4 +51,21 @@ pub enum IkError {
         /// Remaining task error norm.
         error_norm: f64,
     },
+}
+
+/// Which stopping criterion of Table 4.1 ended the iteration.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StopReason {
+    /// sigma_2: `|f(q_k) - x| < eps_c` (target reached).
+    Converged,
+    /// sigma_1: `k >= k_max`.
+    IterationLimit,
+    /// sigma_3: `|f(q_k+1) - f(q_k)| < eps_p`.
+    SmallProgress,
+    /// sigma_4: `|grad phi| < eps_g` (stationary point of (4.4) that is not a root).
+    SmallGradient,
+    /// `J J^T` singular: no Newton step exists (Algorithm 4.1 only).
+    Singular,
+    /// The line search found no decrease along the direction (Algorithm 4.2 only).
+    NoDecrease,
 }

@@ -6,12 +6,12 @@
 //! ([`ik::PositionIk`]), and resolved motion rate control with a weighted generalized inverse
 //! and a null-space term for 1 kHz tracking ([`ik::ClosedLoopIk`], [`ik::Rmrc`]).
 //! [`tasks::TaskStack`] stacks generic tasks on any model (frame pose / position / orientation,
-//! relative frame, CoM, posture, joint, angular momentum), and [`ik::Ik`] runs it on a URDF
+//! relative frame, CoM, posture, joint, angular momentum), and [`whole_body::Ik`] runs it on a URDF
 //! model by link and joint names with the URDF's joint position and velocity limits kept by
-//! default. [`tasks::LolaTasks`] is the task set of the Lola-like biped of `biped_robots` (feet,
-//! CoG, upper body, arm CoGs, single joints, each switchable): its feet relative to the CoG in
-//! the planning frame and its arm-subtree CoGs are Lola's own, so it stays a task set of its
-//! own (the allocation-free fast path of the walk); its other rows equal the generic tasks'. [`walk`] puts everything together: a
+//! default. [`tasks::LolaTasks`] is the walk's task set (Table 4.2: feet and arm CoGs as
+//! offsets from the CoG in the planning frame, CoG, upper body, single joints, each
+//! switchable), a configuration of a [`tasks::TaskStack`] on any walking robot's frames.
+//! [`walk`] puts everything together: a
 //! walking pattern ([`pattern`]) tracked by the IK with self-collision avoidance
 //! ([`avoidance`]) and one of the thesis's methods for the vertical angular momentum
 //! ([`momentum`]), evaluated cycle by cycle ([`walk::run_walk`]), and optionally in the
@@ -54,14 +54,16 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
-//! IK on a URDF robot (the Unitree G1 of `biped_dynamics`) with [`ik::Ik`] in a few lines:
+//! IK on a URDF robot (the Unitree G1 of `biped_dynamics`) with [`whole_body::Ik`] in a few lines:
 //! `cargo run --release --example urdf_ik` (in the repository's `examples/`); with a task map
 //! of one's own: `cargo run -p biped_control --example g1_ik`.
 //!
 //! # Modules
 //!
 //! - [`ik`]: position IK, RMRC, closed-loop and acceleration-level IK, hard joint limits,
-//!   joint-limit cost, task blending, orientation errors, and the URDF IK builder [`ik::Ik`].
+//!   joint-limit cost, task blending, orientation errors (on any [`ik::TaskMap`]).
+//! - [`whole_body`]: [`whole_body::Ik`], IK on a URDF model by link and joint names with its
+//!   limits kept, built from [`tasks`] and [`momentum`].
 //! - [`tasks`]: generic tasks on any model ([`tasks::TaskStack`]) and Lola's task description
 //!   (Table 4.2) with switchable tasks.
 //! - [`avoidance`]: self-collision avoidance from SSV distances (ch. 5).
@@ -78,6 +80,8 @@ pub mod momentum;
 pub mod pattern;
 pub mod tasks;
 pub mod walk;
+pub mod whole_body;
 
 pub use error::IkError;
 pub use ik::Weight;
+pub use whole_body::{Ik, IkOptions, StepReport};

@@ -3,7 +3,7 @@
 //! be the same with and without self-collision avoidance (its gain scales only its own part).
 
 use biped_control::avoidance::RepulsiveLaw;
-use biped_control::ik::Ik;
+use biped_control::whole_body::Ik;
 use biped_dynamics::{update_placements, Data};
 use biped_robots::description::Robot;
 use nalgebra::DVector;

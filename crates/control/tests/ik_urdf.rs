@@ -1,4 +1,4 @@
-//! `ik::Ik` on the Unitree G1 URDF: a reachable target is reached (checked by forward
+//! `whole_body::Ik` on the Unitree G1 URDF: a reachable target is reached (checked by forward
 //! kinematics), and targets that ask to leave the joint ranges leave every joint inside its
 //! range with the margin and below its URDF velocity limit at every step, while the same
 //! tasks without limits do leave the ranges; with self-collision avoidance on, a posture that
@@ -7,9 +7,10 @@
 //! and the arms' momentum compensation (7.3.2) cancels the vertical momentum of a leg swing.
 
 use biped_control::avoidance::RepulsiveLaw;
-use biped_control::ik::{ClosedLoopIk, CycleInput, Ik, LimitSettings, Weight};
+use biped_control::ik::{ClosedLoopIk, CycleInput, LimitSettings, Weight};
 use biped_control::momentum::CompensationLaw;
 use biped_control::tasks::{TaskHandle, TaskKind};
+use biped_control::whole_body::Ik;
 use biped_dynamics::centroidal_momentum;
 use biped_dynamics::urdf::{load_file, UrdfModel, UrdfOptions};
 use biped_dynamics::{center_of_mass, update_placements, Data, Model};

@@ -1,11 +1,11 @@
-//! An `ik::Ik` step on the G1 allocates nothing once the solver exists (counting global
+//! An `whole_body::Ik` step on the G1 allocates nothing once the solver exists (counting global
 //! allocator): with feet, CoM, pelvis orientation and posture tasks, joint limits, moving
 //! targets, self-collision avoidance and momentum compensation.
 
 use biped_control::avoidance::RepulsiveLaw;
-use biped_control::ik::Ik;
 use biped_control::momentum::CompensationLaw;
 use biped_control::tasks::{TaskHandle, TaskKind};
+use biped_control::whole_body::Ik;
 use biped_dynamics::{center_of_mass, update_placements, Data};
 use biped_robots::description::Robot;
 use biped_test_support::alloc::{allocations, Counting};

@@ -156,7 +156,7 @@ fn bad_points_are_rejected() {
 
 #[test]
 fn ik_moves_an_arm_com_to_an_offset_from_the_com() {
-    use biped_control::ik::Ik;
+    use biped_control::whole_body::Ik;
     let robot = &g1().robot;
     let model = &robot.urdf.model;
     let mut q = robot.comfort.clone();

@@ -2,7 +2,7 @@
 //! joint keeps the IK's margin from its URDF range, or, where the start pose lies inside that
 //! margin band, never comes closer than it started (the IK then moves it out).
 
-use biped_control::ik::Ik;
+use biped_control::whole_body::Ik;
 use biped_robots::description::Robot;
 use nalgebra::DVector;
 

@@ -6,9 +6,9 @@
 
 use super::bounds::JointBounds;
 use biped_control::avoidance::RepulsiveLaw;
-use biped_control::ik::{Ik, StepReport};
 use biped_control::momentum::CompensationLaw;
 use biped_control::tasks::{Frame, TaskHandle, TaskKind};
+use biped_control::whole_body::{Ik, StepReport};
 use biped_dynamics::{center_of_mass, Data};
 use biped_robots::description::Robot;
 use nalgebra::{DVector, Isometry3, Matrix3, Vector3};

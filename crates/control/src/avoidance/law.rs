@@ -7,8 +7,6 @@
 //! *decrease* distances; with `dH/dd = -g` the term becomes `+alpha g W^-1 (dd/dq)^T`, which
 //! increases `d` at the rate `alpha g (dd/dq) W^-1 (dd/dq)^T >= 0`.
 
-use super::error::AvoidanceError;
-
 /// A repulsive law `g(d)` for `d < d_a` (zero beyond), eqs. (5.11), (5.12), (5.15).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum RepulsiveLaw {
@@ -41,22 +39,6 @@ impl Default for RepulsiveLaw {
 }
 
 impl RepulsiveLaw {
-    /// Checks the parameters (finite, `m < 0`, `s > 0`, `s0 > 0`, `0 <= t <= 1`).
-    pub fn validate(&self) -> Result<(), AvoidanceError> {
-        let ok = match *self {
-            RepulsiveLaw::Linear { m } => m.is_finite() && m < 0.0,
-            RepulsiveLaw::Quadratic { s } => s.is_finite() && s > 0.0,
-            RepulsiveLaw::Blended { s0, t } => {
-                s0.is_finite() && s0 > 0.0 && (0.0..=1.0).contains(&t)
-            }
-        };
-        if ok {
-            Ok(())
-        } else {
-            Err(AvoidanceError::BadLaw(*self))
-        }
-    }
-
     /// `g(d) >= 0` for `d < d_a`, zero for `d >= d_a` (5.10); `d_a > 0`.
     #[inline]
     pub fn g(&self, d: f64, d_a: f64) -> f64 {

@@ -43,6 +43,7 @@
 //! - (5.15) divides by `t^2 - 1`: `t = 1` is allowed and is the linear law on all of
 //!   `d < d_a` (the quadratic branch is empty).
 
+mod check;
 mod error;
 mod gradient;
 pub mod law;

@@ -10,15 +10,11 @@
 //! - [`joint_cost`]: joint-limit and comfort cost H_J (Fig. 4.2).
 //! - [`orientation`]: angle-axis orientation error and Euler Z-X-Z (Appendix C).
 //! - [`blend`]: task activation ramps and null-space rate limiting (5.1).
-//! - [`builder`]: [`Ik`], IK on a URDF model by frame and joint names with its limits kept.
 //! - [`limits`] + [`saturation`]: hard joint position and velocity limits kept by saturation
 //!   in the null space (SNS) around Algorithm 4.3, for any task map.
 
 pub mod blend;
-pub mod builder;
 pub mod differential;
-#[cfg(test)]
-mod fold_tests;
 pub mod joint_cost;
 pub mod limits;
 pub mod linalg;
@@ -31,7 +27,6 @@ pub mod task_map;
 pub mod weight;
 
 pub use blend::{Activation, NullSpaceLimiter};
-pub use builder::{Ik, IkOptions, StepReport};
 pub use differential::{
     jacobian_transpose, AccelerationInput, ClosedLoopIk, CycleInput, ResolvedAcceleration,
 };

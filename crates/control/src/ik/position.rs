@@ -16,24 +16,8 @@ use super::rmrc::{Rmrc, RmrcProblem};
 use super::task_map::{TaskBuffers, TaskMap};
 use super::weight::Weight;
 use crate::error::IkError;
+pub use crate::error::StopReason;
 use nalgebra::DVector;
-
-/// Which stopping criterion of Table 4.1 ended the iteration.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum StopReason {
-    /// sigma_2: `|f(q_k) - x| < eps_c` (target reached).
-    Converged,
-    /// sigma_1: `k >= k_max`.
-    IterationLimit,
-    /// sigma_3: `|f(q_k+1) - f(q_k)| < eps_p`.
-    SmallProgress,
-    /// sigma_4: `|grad phi| < eps_g` (stationary point of (4.4) that is not a root).
-    SmallGradient,
-    /// `J J^T` singular: no Newton step exists (Algorithm 4.1 only).
-    Singular,
-    /// The line search found no decrease along the direction (Algorithm 4.2 only).
-    NoDecrease,
-}
 
 /// Tolerances of Table 4.1 and solver parameters.
 #[derive(Debug, Clone, Copy, PartialEq)]

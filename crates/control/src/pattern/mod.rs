@@ -31,6 +31,7 @@
 //! Conventions: world frame with the ground at `z = 0`, x forward and the feet initially at
 //! `y = +-step_width / 2`; foot poses are the sole frames (`l_sole`, `r_sole` of the model).
 
+mod blend;
 pub mod dare;
 mod error;
 mod feet;

@@ -23,7 +23,8 @@
 //!   and the stopping steps, which land further ahead of the CoM, strike more.
 //! - Pitch profiles are minimum-jerk blends with zero rate at every contact switch.
 
-use super::swing::min_jerk;
+use super::blend::min_jerk;
+pub use super::blend::min_jerk_inverse;
 use super::PatternError;
 use serde::{Deserialize, Serialize};
 
@@ -182,24 +183,4 @@ pub fn window_blend(
         0.0
     };
     [from + s * (to - from), rate * (to - from)]
-}
-
-/// Smallest `tau` in \[0, 1] with `min_jerk(tau) >= s` (bisection; 1 if `s > 1`).
-pub fn min_jerk_inverse(s: f64) -> f64 {
-    let (mut lo, mut hi) = (0.0, 1.0);
-    if s <= 0.0 {
-        return 0.0;
-    }
-    if s >= 1.0 {
-        return 1.0;
-    }
-    for _ in 0..40 {
-        let mid = 0.5 * (lo + hi);
-        if min_jerk(mid)[0] < s {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    hi
 }

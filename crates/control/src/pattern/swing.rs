@@ -6,20 +6,10 @@
 //! acceleration at lift-off and touch-down and peaks at `h` for `tau = 1/2`. Pitch and toe
 //! angle blend with the same `s` from their lift-off to their touch-down values.
 
+pub use super::blend::min_jerk;
 use super::footsteps::Pose2;
 use super::roll::Contact;
 use nalgebra::{UnitQuaternion, Vector3};
-
-/// Minimum-jerk blend `[s, ds/dtau, d2s/dtau2]` at `tau` (clamped to \[0, 1]).
-pub fn min_jerk(tau: f64) -> [f64; 3] {
-    let t = tau.clamp(0.0, 1.0);
-    let (t2, t3) = (t * t, t * t * t);
-    [
-        t3 * (10.0 - 15.0 * t + 6.0 * t2),
-        30.0 * t2 * (1.0 - t) * (1.0 - t),
-        60.0 * t * (1.0 - t) * (1.0 - 2.0 * t),
-    ]
-}
 
 /// Lift profile `[z, dz/dtau]` with peak `height` at `tau = 1/2` (clamped to \[0, 1]).
 pub fn lift(tau: f64, height: f64) -> [f64; 2] {

@@ -8,8 +8,8 @@
 //! blend (`swing::min_jerk`), so the reference is C2 in time. The ZMP reference point of a
 //! foot is its sole frame origin (below the ankle).
 
+use super::blend::min_jerk;
 use super::footsteps::{Foot, FootstepPlan, Pose2};
-use super::swing::min_jerk;
 use super::PatternParams;
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};

@@ -4,7 +4,7 @@
 //! [`TaskStack`] stacks generic [`Task`]s (frame pose / position / orientation, relative
 //! frame, offset of a frame, the CoM or a subtree's CoM from another such point, CoM,
 //! posture, joint, angular momentum; see [`task`]) on any
-//! [`biped_dynamics::Model`] and implements [`crate::ik::TaskMap`]; [`crate::ik::Ik`] builds
+//! [`biped_dynamics::Model`] and implements [`crate::ik::TaskMap`]; [`crate::whole_body::Ik`] builds
 //! one from URDF names with the joint limits on.
 //!
 //! [`LolaTasks`] is one configuration of a [`TaskStack`]: it stacks the active tasks of

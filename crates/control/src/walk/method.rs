@@ -144,7 +144,7 @@ impl Default for WalkParams {
             friction: biped_sim::contact::ContactParams::default().friction,
             task_tolerance: 0.02,
             contact_tolerance: 5e-3,
-            arm_pose: [0.0, 0.1, super::posture::WALK_ELBOW],
+            arm_pose: [0.0, 0.1, super::WALK_ELBOW],
         }
     }
 }

@@ -69,7 +69,9 @@ pub use dynamic::{
 pub use error::WalkError;
 pub use evaluate::{CycleMetrics, Evaluator};
 pub use method::{Method, WalkParams};
-pub use posture::{walk_pattern_params, walk_start_configuration, WALK_ELBOW, WALK_KNEE};
+pub use robot::lola_posture::{
+    walk_pattern_params, walk_start_configuration, WALK_ELBOW, WALK_KNEE,
+};
 pub use robot::{WalkJoint, WalkRobot};
 pub use run::{run_walk, run_walk_robot, WalkRun, WalkSeries, WalkSummary};
 pub use trajectory::Trajectory;

@@ -1,14 +1,13 @@
-//! Walking posture, placement on the pattern's footprints, the `none` method's arm lock and
-//! the reference method's arm swing about the shoulder (see the module docs of [`super`]).
+//! Placement of the walking posture on the pattern's footprints, the `none` method's arm lock
+//! and the reference method's arm swing about the shoulder (see the module docs of
+//! [`super`]; the Lola-like biped's posture itself is in `robot::lola_posture`).
 
 use super::error::{model_err, WalkError};
 use super::robot::{frame_position, WalkRobot};
 use crate::ik::Weight;
-use crate::momentum::{PointTarget, LOLA_ARMS};
-use crate::pattern::fit::{bent_knee_pose, standing_com_height};
-use crate::pattern::{PatternParams, PatternSample};
+use crate::momentum::PointTarget;
+use crate::pattern::PatternSample;
 use crate::tasks::LolaTasks;
-use biped_robots::lola::LolaModel;
 use nalgebra::{DVector, Vector3};
 
 /// Start configuration of `robot` with the sole midpoint on the pattern's first footprints'
@@ -31,51 +30,6 @@ pub(crate) fn place_on_footprints(
         q[k] += shift[k];
     }
     Ok(q)
-}
-
-/// Knee bend of the walking posture \[rad]: with toe-off and heel strike, straight enough that
-/// the stance ankle stays inside its dorsiflexion limit at the end of single support, bent
-/// enough that the legs reach the 0.4-0.5 m steps at touch-down (see [`super`]).
-pub const WALK_KNEE: f64 = 0.55;
-
-/// Elbow angle of the walking posture \[rad]: bent, away from the stretched-arm singularity
-/// of the 3-D arm CoG task (a hanging straight arm cannot move its CoG vertically).
-pub const WALK_ELBOW: f64 = -0.8;
-
-/// Start posture: the flat-footed bent-knee pose of [`WALK_KNEE`] with the arm joints
-/// `arm_pose = [shoulder flexion, upper-arm abduction (left; mirrored right), elbow]`
-/// (default [`super::WalkParams::arm_pose`]: `[0, 0.1, WALK_ELBOW]`).
-pub fn walk_start_configuration(
-    lola: &LolaModel,
-    arm_pose: [f64; 3],
-) -> Result<DVector<f64>, WalkError> {
-    let mut q = bent_knee_pose(lola, WALK_KNEE)?;
-    for (k, name) in LOLA_ARMS.iter().enumerate() {
-        let l = lola.limits.iter().find(|l| l.name == *name);
-        let i = l
-            .ok_or_else(|| model_err(format!("no joint {name}")))?
-            .q_index;
-        let sign = if k == 4 { -1.0 } else { 1.0 };
-        q[i] = sign * arm_pose[k % 3];
-    }
-    Ok(q)
-}
-
-/// Pattern parameters for `lola` walking in the [`WALK_KNEE`] posture: the default pattern
-/// with `n_steps`, `step_length`, `step_time` and the LIPM height of that posture.
-pub fn walk_pattern_params(
-    lola: &LolaModel,
-    n_steps: usize,
-    step_length: f64,
-    step_time: f64,
-) -> Result<PatternParams, WalkError> {
-    Ok(PatternParams {
-        n_steps,
-        step_length,
-        step_time,
-        com_height: standing_com_height(lola, WALK_KNEE)?,
-        ..PatternParams::default()
-    })
 }
 
 /// Nominal arm CoG relative to the CoG, and relative to its shoulder with the distance

@@ -10,12 +10,12 @@
 
 mod describe;
 mod geometry;
+pub mod lola_posture;
 
 pub(crate) use geometry::frame_position;
 pub use geometry::{REACH_FRACTION, STEP_FRACTION};
 
 use super::error::{model_err, WalkError};
-use super::posture::{walk_start_configuration, WALK_KNEE};
 use crate::momentum::LOLA_ARMS;
 use crate::pattern::fit::standing_com_height;
 use crate::pattern::{FootGeometry, FootRoll, PatternParams};
@@ -23,6 +23,7 @@ use crate::tasks::WalkTaskFrames;
 use biped_dynamics::Model;
 use biped_robots::lola::{lola_collision_model, LolaModel};
 use biped_ssv::CollisionModel;
+use lola_posture::{walk_start_configuration, WALK_KNEE};
 use nalgebra::DVector;
 
 /// One actuated joint with its position range.

@@ -3,8 +3,8 @@
 //!
 //! Tasks are added by frame (URDF link) or joint name and stacked in a
 //! [`crate::tasks::TaskStack`]; each [`Ik::step`] is one closed-loop RMRC cycle (4.13)-(4.16)
-//! whose joint velocities stay inside the box of [`super::limits`] by saturation in the null
-//! space ([`super::saturation`]): every joint with a URDF range stays `margin` inside it and
+//! whose joint velocities stay inside the box of [`crate::ik::limits`] by saturation in the null
+//! space ([`crate::ik::saturation`]): every joint with a URDF range stays `margin` inside it and
 //! below its `<limit velocity>` (or `LimitSettings::max_velocity` where the URDF gives none).
 //! Joints without a range (continuous) are not limited. Added tasks are hard (kept exactly
 //! while the limits allow) unless given a weight; [`Ik::posture`] is soft (its rows are folded
@@ -20,7 +20,7 @@
 //! The G1's left foot 5 cm up, the right foot held, with the URDF's limits kept:
 //!
 //! ```
-//! use biped_control::ik::Ik;
+//! use biped_control::whole_body::Ik;
 //! use biped_dynamics::urdf::{load_file, UrdfOptions};
 //! use biped_dynamics::{update_placements, Data};
 //! use nalgebra::Translation3;
@@ -47,14 +47,16 @@
 //! ```
 
 mod add;
+#[cfg(test)]
+mod fold_tests;
 mod null_space;
 
-use super::differential::{ClosedLoopIk, CycleInput};
-use super::limits::{JointLimits, JointRange, LimitSettings};
-use super::saturation::SaturationReport;
-use super::task_map::TaskMap;
-use super::weight::Weight;
 use crate::error::IkError;
+use crate::ik::differential::{ClosedLoopIk, CycleInput};
+use crate::ik::limits::{JointLimits, JointRange, LimitSettings};
+use crate::ik::saturation::SaturationReport;
+use crate::ik::task_map::TaskMap;
+use crate::ik::weight::Weight;
 use crate::tasks::{Frame, Task, TaskHandle, TaskStack};
 use biped_dynamics::urdf::UrdfModel;
 use nalgebra::DVector;

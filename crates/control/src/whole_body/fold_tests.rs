@@ -3,10 +3,11 @@
 //! targets and weights, task orders, foot targets far enough to saturate and each weight shape,
 //! and on random tree models.
 
-use super::{
-    ClosedLoopIk, CycleInput, Ik, JointLimits, JointRange, LimitSettings, TaskMap, Weight,
-};
+use super::Ik;
 use crate::error::IkError;
+use crate::ik::{
+    ClosedLoopIk, CycleInput, JointLimits, JointRange, LimitSettings, TaskMap, Weight,
+};
 use crate::tasks::{Frame, Task, TaskKind, TaskStack};
 use biped_dynamics::RigidInertia;
 use biped_dynamics::{update_placements, BodySpec, Data, JointModel, Model, ModelBuilder};
