@@ -1,9 +1,10 @@
 //! Criterion benchmarks of the per-cycle angular momentum work on Lola Type 2 (thesis ch. 7):
 //! `J_L`/`J_Lz` (centroidal computation at `q`, incl. kinematics, and the copy alone), the
-//! compensation term (7.9), the minimisation weight update (7.13) and its `W^-1 x` (7.15);
-//! the CoM Jacobian as the baseline the IK cycle pays anyway.
+//! minimisation weight update (7.13) and its `W^-1 x` (7.15); the CoM Jacobian as the
+//! baseline the IK cycle pays anyway. The compensation is solved within the IK cycle and
+//! timed with it (`benches/cycle.rs`).
 
-use biped_control::momentum::{Compensation, MomentumMinimisation, VerticalMomentum};
+use biped_control::momentum::{MomentumMinimisation, VerticalMomentum};
 use biped_dynamics::{Centroidal, Data};
 use biped_robots::lola::{self, LolaType};
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -20,10 +21,8 @@ fn bench_momentum(c: &mut Criterion) {
     let mut data = Data::new(m);
     let mut centroidal = Centroidal::new(m);
     let mut vm = VerticalMomentum::new(m);
-    let comp = Compensation::lola(m).expect("Lola arm joints");
     let minimise = MomentumMinimisation::new(0.5).expect("delta > 0");
     let mut w = minimise.weight(m.nv()).expect("weight");
-    let mut y = DVector::zeros(m.nv());
     let mut out = DVector::zeros(m.nv());
     vm.compute(m, &mut data, &mut centroidal, &q).expect("J_L");
 
@@ -40,9 +39,6 @@ fn bench_momentum(c: &mut Criterion) {
     group.bench_function("jlz_update_only", |b| {
         b.iter(|| vm.update(black_box(&centroidal)))
     });
-    group.bench_function("compensation", |b| {
-        b.iter(|| comp.add_to(vm.jacobian_z(), black_box(&v), 0.1, &mut y))
-    });
     group.bench_function("weight_update", |b| {
         b.iter(|| minimise.update(black_box(vm.jacobian_z()), &mut w))
     });
@@ -52,8 +48,6 @@ fn bench_momentum(c: &mut Criterion) {
     group.bench_function("cycle_total", |b| {
         b.iter(|| {
             vm.compute(m, &mut data, &mut centroidal, black_box(&q))?;
-            y.fill(0.0);
-            comp.add_to(vm.jacobian_z(), &v, 0.1, &mut y)?;
             minimise.update(vm.jacobian_z(), &mut w)
         })
     });

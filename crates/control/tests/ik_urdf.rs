@@ -8,7 +8,6 @@
 
 use biped_control::avoidance::RepulsiveLaw;
 use biped_control::ik::{ClosedLoopIk, CycleInput, LimitSettings, Weight};
-use biped_control::momentum::CompensationLaw;
 use biped_control::tasks::{TaskHandle, TaskKind};
 use biped_control::whole_body::Ik;
 use biped_dynamics::centroidal_momentum;
@@ -263,8 +262,7 @@ fn peak_lz_of_a_leg_swing(robot: &Robot, compensate: bool) -> f64 {
             .iter()
             .map(|s| s.as_str())
             .collect();
-        ik.compensate_momentum(&reducing, CompensationLaw::Exact)
-            .unwrap();
+        ik.compensate_momentum(&reducing).unwrap();
         ik.set_momentum_target(0.0);
     }
     let start = pose(model, &q0, FEET[0]);

@@ -3,7 +3,6 @@
 //! targets, self-collision avoidance and momentum compensation.
 
 use biped_control::avoidance::RepulsiveLaw;
-use biped_control::momentum::CompensationLaw;
 use biped_control::tasks::{TaskHandle, TaskKind};
 use biped_control::whole_body::Ik;
 use biped_dynamics::{center_of_mass, update_placements, Data};
@@ -41,8 +40,7 @@ fn ik_step_does_not_allocate() {
         .iter()
         .map(String::as_str)
         .collect();
-    ik.compensate_momentum(&reducing, CompensationLaw::Normalised)
-        .unwrap();
+    ik.compensate_momentum(&reducing).unwrap();
     let mut q = q0.clone();
     let mut step = |k: usize, q: &mut nalgebra::DVector<f64>| {
         let task = ik.task_mut(TaskHandle(0)).unwrap();

@@ -1,198 +1,215 @@
-//! Compensation (7.4)-(7.9) on Lola Type 2: the exact law equals the dense least-squares
-//! minimum-norm solution and, fed through the null space of (7.3), makes `J_Lz qdot = L_d`;
-//! the normalised law (7.9) is the same direction scaled by `|J_r|` and stays bounded.
+//! Compensation (7.3)-(7.9) solved within the cycle, on Lola Type 2: with the arms free of
+//! tasks and `W = E` it is the minimum-norm solution (7.7) (dense pseudo-inverse), it sets
+//! `L_z` to `k L_d + (1 - k) L_z` while the tasks keep their velocities, and it stays inside
+//! the joint limits' box.
 
 #[path = "momentum_util.rs"]
 mod util;
 
+use biped_control::ik::{JointLimits, JointRange, LimitSettings, RmrcProblem, SaturatedRmrc};
 use biped_control::momentum::{
-    Compensation, CompensationLaw, MomentumError, VerticalMomentum, LOLA_ARMS, LOLA_ARM_FLEXION,
+    Compensation, InCycleCompensation, MomentumError, VerticalMomentum, LOLA_ARMS, LOLA_ARM_FLEXION,
 };
+use biped_control::{IkError, Weight};
 use nalgebra::{DMatrix, DVector};
 use util::{pinv, rel, Lola};
 
-/// `J_Lz^T` at a random state, a random `qdot` and a random `L_d`.
-fn sample(s: &mut Lola) -> (DVector<f64>, DVector<f64>, f64) {
+/// `J_Lz^T` at a random state, that state and a random `L_d`.
+fn sample(s: &mut Lola) -> (DVector<f64>, DVector<f64>, DVector<f64>, f64) {
     let model = s.lola.model.clone();
     let (q, qdot) = s.state();
     let mut vm = VerticalMomentum::new(&model);
     vm.compute(&model, &mut s.data, &mut s.centroidal, &q)
         .unwrap();
     let l_d = s.vector(1)[0];
-    (vm.jacobian_z().clone(), qdot, l_d)
+    (vm.jacobian_z().clone(), q, qdot, l_d)
+}
+
+/// Unit rows on every DoF that `comp` does not reduce (the tasks fix the producing DoFs).
+fn producing_rows(comp: &Compensation, n: usize) -> DMatrix<f64> {
+    let rows: Vec<usize> = (0..n).filter(|&i| !comp.is_reducing(i)).collect();
+    DMatrix::from_fn(rows.len(), n, |a, b| if rows[a] == b { 1.0 } else { 0.0 })
+}
+
+/// Limit-keeping solver without damping for `m` rows on `lola`, with its joint ranges if
+/// `ranges` (velocity limit `vmax`), else none.
+fn solver(s: &Lola, m: usize, ranges: bool, vmax: f64) -> SaturatedRmrc {
+    let settings = LimitSettings {
+        regularisation: 0.0,
+        max_velocity: vmax,
+        ..LimitSettings::default()
+    };
+    let list = match ranges {
+        true => (s.lola.limits.iter())
+            .map(|l| JointRange {
+                q_index: l.q_index,
+                v_index: l.v_index,
+                lower: l.lower,
+                upper: l.upper,
+            })
+            .collect(),
+        false => Vec::new(),
+    };
+    let n = s.model().nv();
+    SaturatedRmrc::new(m, n, JointLimits::new(list, settings).unwrap()).unwrap()
+}
+
+/// The cycle's solve of `J qd = xd` (W = E) followed by the compensation; returns the main
+/// solution and the compensated one.
+fn solve_and_compensate(
+    sns: &mut SaturatedRmrc,
+    comp: &mut InCycleCompensation,
+    (j, xd): (&DMatrix<f64>, &DVector<f64>),
+    (q, jlz, l_d): (&DVector<f64>, &DVector<f64>, f64),
+) -> (DVector<f64>, DVector<f64>) {
+    let w = Weight::Identity;
+    let p = RmrcProblem::new(j, j.nrows(), xd, &w);
+    let mut qd = DVector::zeros(j.ncols());
+    sns.solve(&p, q, 1e-3, &mut qd).unwrap();
+    let main = qd.clone();
+    comp.apply(sns, &p, jlz, l_d, &mut qd).unwrap();
+    (main, qd)
 }
 
 #[test]
-fn exact_law_is_the_least_squares_solution_and_tracks_the_reference() {
+fn free_arms_give_the_minimum_norm_solution_and_reach_the_reference() {
     let mut s = Lola::new(11);
     for joints in [&LOLA_ARM_FLEXION[..], &LOLA_ARMS[..]] {
-        let comp = Compensation::new(s.model(), joints, CompensationLaw::Exact).unwrap();
-        let r = comp.reducing().to_vec();
+        let c = Compensation::new(s.model(), joints).unwrap();
+        let r = c.reducing().to_vec();
+        let jx = producing_rows(&c, s.model().nv());
+        let mut sns = solver(&s, jx.nrows(), false, 10.0);
+        let mut comp = InCycleCompensation::new(c, jx.nrows(), 1e9).unwrap();
         for _ in 0..10 {
-            let (jlz, qdot, l_d) = sample(&mut s);
-            let mut y = DVector::zeros(jlz.len());
-            let terms = comp.add_to(&jlz, &qdot, l_d, &mut y).unwrap();
-            // Independent: minimum-norm w with J_r w = L_d - J_p qdot_p, by dense SVD.
+            let (jlz, q, qdot_p, l_d) = sample(&mut s);
+            let xd = &jx * &qdot_p;
+            let (main, qd) = solve_and_compensate(&mut sns, &mut comp, (&jx, &xd), (&q, &jlz, l_d));
+            // the tasks keep their velocities, L_z reaches the reference (7.5)
+            assert!((&jx * &qd - &xd).norm() < 1e-9 * xd.norm().max(1.0));
+            assert!(rel(jlz.dot(&qd), l_d) < 1e-9, "{} vs {l_d}", jlz.dot(&qd));
+            // Independent: minimum-norm w with J_r w = L_d - J_Lz qd_main, by dense SVD (7.7).
             let j_r = DMatrix::from_fn(1, r.len(), |_, k| jlz[r[k]]);
-            let mut producing = jlz.dot(&qdot);
-            for &i in &r {
-                producing -= jlz[i] * qdot[i];
-            }
-            assert!(rel(terms.producing, producing) < 1e-12);
-            let w = pinv(&j_r) * DVector::from_element(1, l_d - producing);
+            let w = pinv(&j_r) * DVector::from_element(1, l_d - jlz.dot(&main));
             for (k, &i) in r.iter().enumerate() {
-                assert!((-y[i] - w[k]).abs() < 1e-9 * w.norm().max(1.0));
+                assert!((qd[i] - main[i] - w[k]).abs() < 1e-9 * w.norm().max(1.0));
             }
-            // The thesis's qdot_r is the negated arm velocity: J_p qdot_p - J_r qdot_r = L_d (7.5).
-            let mut applied = qdot.clone();
-            for &i in &r {
-                applied[i] = -y[i];
-            }
-            assert!(rel(jlz.dot(&applied), l_d) < 1e-9);
-            assert!(y
-                .iter()
-                .enumerate()
-                .all(|(i, v)| comp.is_reducing(i) || *v == 0.0));
         }
     }
 }
 
 #[test]
-fn exact_law_through_the_rmrc_null_space_reaches_the_reference() {
-    // Tasks fix every producing DoF (the arms are free, q_r = q_free): J_x = S_p. The RMRC
-    // solution (7.3) with W = E, qdot = J_x^# xdot - N y, from dense pseudo-inverses.
+fn the_gain_removes_its_share_and_the_tasks_react() {
+    // Random task rows that involve the arms too: the tasks' reaction to the arm motion is
+    // part of the term, so J qd = xd still holds and L_z = k L_d + (1 - k) L_z,main.
     let mut s = Lola::new(12);
-    let comp = Compensation::new(s.model(), &LOLA_ARM_FLEXION, CompensationLaw::Exact).unwrap();
+    let n = s.model().nv();
+    let c = Compensation::lola(s.model())
+        .unwrap()
+        .with_gain(0.6)
+        .unwrap();
+    let m = 18;
+    let mut sns = solver(&s, m, false, 10.0);
+    let mut comp = InCycleCompensation::new(c, m, 1e9).unwrap();
     for _ in 0..5 {
-        let (jlz, qdot_p, l_d) = sample(&mut s);
-        let n = jlz.len();
-        let rows: Vec<usize> = (0..n).filter(|&i| !comp.is_reducing(i)).collect();
-        let jx = DMatrix::from_fn(rows.len(), n, |a, b| if rows[a] == b { 1.0 } else { 0.0 });
-        let xdot = &jx * &qdot_p;
-        let jx_pinv = pinv(&jx);
-        let null = DMatrix::identity(n, n) - &jx_pinv * &jx;
-        let mut y = DVector::zeros(n);
-        comp.add_to(&jlz, &qdot_p, l_d, &mut y).unwrap();
-        let qdot = &jx_pinv * xdot - null * y;
+        let j = DMatrix::from_fn(m, n, |_, _| s.vector(1)[0]);
+        let xd = s.vector(m);
+        let (jlz, q, _, l_d) = sample(&mut s);
+        let (main, qd) = solve_and_compensate(&mut sns, &mut comp, (&j, &xd), (&q, &jlz, l_d));
+        assert!((&j * &qd - &xd).norm() < 1e-8 * xd.norm().max(1.0));
+        let expected = 0.6 * l_d + 0.4 * jlz.dot(&main);
         assert!(
-            rel(jlz.dot(&qdot), l_d) < 1e-8,
-            "{} vs {l_d}",
-            jlz.dot(&qdot)
+            rel(jlz.dot(&qd), expected) < 1e-8,
+            "{} vs {expected}",
+            jlz.dot(&qd)
         );
     }
 }
 
 #[test]
-fn normalised_law_is_the_exact_direction_scaled_by_the_norm() {
+fn the_term_stays_inside_the_velocity_box_and_under_its_speed_cap() {
     let mut s = Lola::new(13);
-    let exact = Compensation::new(s.model(), &LOLA_ARM_FLEXION, CompensationLaw::Exact).unwrap();
-    let norm = Compensation::lola(s.model())
-        .unwrap()
-        .with_gain(2.0)
-        .unwrap();
-    assert_eq!(norm.law(), CompensationLaw::Normalised);
+    let c = Compensation::lola(s.model()).unwrap();
+    let jx = producing_rows(&c, s.model().nv());
+    let (vmax, cap) = (0.5, 0.3);
+    let mut sns = solver(&s, jx.nrows(), true, vmax);
+    let mut comp = InCycleCompensation::new(c, jx.nrows(), cap).unwrap();
     for _ in 0..10 {
-        let (jlz, qdot, l_d) = sample(&mut s);
-        let (mut ye, mut yn) = (DVector::zeros(jlz.len()), DVector::zeros(jlz.len()));
-        let te = exact.add_to(&jlz, &qdot, l_d, &mut ye).unwrap();
-        norm.add_to(&jlz, &qdot, l_d, &mut yn).unwrap();
-        let j_r: f64 = exact
-            .reducing()
-            .iter()
-            .map(|&i| jlz[i] * jlz[i])
-            .sum::<f64>();
-        assert!(rel(te.reducing_norm, j_r.sqrt()) < 1e-12);
-        assert!((&yn - &ye * (2.0 * te.reducing_norm)).norm() < 1e-9 * yn.norm().max(1.0));
+        let (jlz, q, qdot_p, _) = sample(&mut s);
+        let xd = &jx * (&qdot_p * 0.1);
+        // a target far beyond what the arms can give within their box
+        let l_d = 100.0;
+        let (main, qd) = solve_and_compensate(&mut sns, &mut comp, (&jx, &xd), (&q, &jlz, l_d));
+        let (lo, hi) = sns.velocity_box();
+        for i in 0..qd.len() {
+            assert!(
+                qd[i] >= lo[i] - 1e-12 && qd[i] <= hi[i] + 1e-12,
+                "joint {i}"
+            );
+        }
+        let term = &qd - &main;
+        let arms = comp.compensation().reducing();
+        assert!(arms.iter().all(|&i| term[i].abs() <= cap + 1e-12), "{term}");
+        // it still moves L_z towards the target
+        assert!(jlz.dot(&qd) >= jlz.dot(&main) - 1e-12);
     }
 }
 
 #[test]
-fn near_singular_reducing_jacobian() {
+fn reducing_joints_without_effect_add_nothing() {
     let mut s = Lola::new(14);
-    let (mut jlz, qdot, l_d) = sample(&mut s);
-    let exact = Compensation::new(s.model(), &LOLA_ARM_FLEXION, CompensationLaw::Exact).unwrap();
-    let norm = Compensation::lola(s.model()).unwrap();
-    let mut y = DVector::zeros(jlz.len());
-    for scale in [1e-2, 1e-4, 1e-6] {
-        for &i in exact.reducing() {
-            jlz[i] *= scale;
-        }
-        y.fill(0.0);
-        norm.add_to(&jlz, &qdot, l_d, &mut y).unwrap();
-        // (7.9) is |e| J_r / |J_r|: bounded by the momentum error whatever |J_r|.
-        let e = norm.terms(&jlz, &qdot, l_d).unwrap().producing - l_d;
-        assert!(rel(y.norm(), e.abs()) < 1e-9);
-    }
-    for &i in exact.reducing() {
+    let c = Compensation::lola(s.model()).unwrap();
+    let jx = producing_rows(&c, s.model().nv());
+    let mut sns = solver(&s, jx.nrows(), false, 10.0);
+    let reducing = c.reducing().to_vec();
+    let mut comp = InCycleCompensation::new(c, jx.nrows(), 1e9).unwrap();
+    let (mut jlz, q, qdot_p, l_d) = sample(&mut s);
+    for &i in &reducing {
         jlz[i] = 0.0;
     }
-    assert!(matches!(
-        exact.add_to(&jlz, &qdot, l_d, &mut y),
-        Err(MomentumError::Singular { .. })
-    ));
-    y.fill(0.0);
-    norm.add_to(&jlz, &qdot, l_d, &mut y).unwrap();
-    assert_eq!(y.norm(), 0.0);
-}
-
-#[test]
-fn add_to_accumulates_on_the_gradient() {
-    let mut s = Lola::new(15);
-    let (jlz, qdot, l_d) = sample(&mut s);
-    let comp = Compensation::lola(s.model()).unwrap();
-    let gradient = s.vector(jlz.len());
-    let mut y = gradient.clone();
-    comp.add_to(&jlz, &qdot, l_d, &mut y).unwrap();
-    let mut alone = DVector::zeros(jlz.len());
-    comp.add_to(&jlz, &qdot, l_d, &mut alone).unwrap();
-    assert!((y - gradient - alone).norm() < 1e-14);
+    let xd = &jx * &qdot_p;
+    let (main, qd) = solve_and_compensate(&mut sns, &mut comp, (&jx, &xd), (&q, &jlz, l_d));
+    assert_eq!(main, qd);
 }
 
 #[test]
 fn bad_sets_and_inputs_are_typed_errors() {
     let mut s = Lola::new(16);
     let m = s.model().clone();
-    let law = CompensationLaw::Exact;
     assert!(matches!(
-        Compensation::new(&m, &["nose"], law),
+        Compensation::new(&m, &["nose"]),
         Err(MomentumError::UnknownJoint(_))
     ));
     assert!(matches!(
-        Compensation::new(&m, &["root"], law),
+        Compensation::new(&m, &["root"]),
         Err(MomentumError::NotOneDof { .. })
     ));
     let dup = ["l_shoulder", "l_shoulder"];
     assert!(matches!(
-        Compensation::new(&m, &dup, law),
+        Compensation::new(&m, &dup),
         Err(MomentumError::BadReducingSet)
     ));
     assert!(matches!(
-        Compensation::new(&m, &[], law),
+        Compensation::new(&m, &[]),
         Err(MomentumError::BadReducingSet)
     ));
-    let comp = Compensation::lola(&m).unwrap();
-    assert!(comp.clone().with_gain(f64::NAN).is_err());
-    assert!(comp.clone().with_gain(-1.0).is_err());
-    let (jlz, qdot, l_d) = sample(&mut s);
-    let mut y = DVector::zeros(jlz.len());
+    let c = Compensation::lola(&m).unwrap();
+    assert!(c.clone().with_gain(f64::NAN).is_err());
+    assert!(c.clone().with_gain(-1.0).is_err());
+    for speed in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert!(InCycleCompensation::new(c.clone(), 4, speed).is_err());
+    }
+    let jx = producing_rows(&c, m.nv());
+    let mut sns = solver(&s, jx.nrows(), false, 10.0);
+    let mut comp = InCycleCompensation::new(c, jx.nrows(), 1.0).unwrap();
+    let (jlz, q, qdot_p, l_d) = sample(&mut s);
+    let xd = &jx * &qdot_p;
+    let w = Weight::Identity;
+    let p = RmrcProblem::new(&jx, jx.nrows(), &xd, &w);
+    let mut qd = DVector::zeros(m.nv());
+    sns.solve(&p, &q, 1e-3, &mut qd).unwrap();
     let short = DVector::zeros(3);
-    assert!(matches!(
-        comp.add_to(&short, &qdot, l_d, &mut y),
-        Err(MomentumError::Dimension { .. })
-    ));
-    assert!(comp.add_to(&jlz, &short, l_d, &mut y).is_err());
-    assert!(comp
-        .add_to(&jlz, &qdot, l_d, &mut DVector::zeros(2))
-        .is_err());
-    assert!(matches!(
-        comp.add_to(&jlz, &qdot, f64::NAN, &mut y),
-        Err(MomentumError::NonFinite { .. })
-    ));
-    let mut bad = qdot.clone();
-    bad[0] = f64::INFINITY;
-    assert!(comp.add_to(&jlz, &bad, l_d, &mut y).is_err());
-    assert!(
-        y.iter().all(|v| *v == 0.0),
-        "failed calls leave y untouched"
-    );
+    let e = comp.apply(&mut sns, &p, &short, l_d, &mut qd);
+    assert!(matches!(e, Err(IkError::Dimension { .. })), "{e:?}");
+    let mut short_qd = DVector::zeros(3);
+    assert!(comp.apply(&mut sns, &p, &jlz, l_d, &mut short_qd).is_err());
 }

@@ -6,7 +6,6 @@
 
 use super::bounds::JointBounds;
 use biped_control::avoidance::RepulsiveLaw;
-use biped_control::momentum::CompensationLaw;
 use biped_control::tasks::{Frame, TaskHandle, TaskKind};
 use biped_control::whole_body::{Ik, StepReport};
 use biped_dynamics::{center_of_mass, Data};
@@ -237,7 +236,7 @@ fn add_full_terms(robot: &Robot, ik: &mut Ik) -> Result<(), String> {
             "{file}: [momentum] reducing is empty: the full task set needs reducing joints"
         ));
     }
-    ik.compensate_momentum(&reducing, CompensationLaw::Normalised)
+    ik.compensate_momentum(&reducing)
         .map_err(|e| format!("{file}: {e}"))
 }
 

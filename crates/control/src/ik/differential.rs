@@ -118,7 +118,46 @@ impl ClosedLoopIk {
         input: &CycleInput<'_>,
     ) -> Result<(), IkError> {
         self.velocities(task, q, input)?;
-        task.retract(q, &self.qdot, input.dt, &mut self.q_next)?;
+        self.integrate(task, q, input.dt)
+    }
+
+    /// After [`Self::velocities`] with the same `task` and `input`: `correct` changes
+    /// `self.qdot` with the limit-keeping solver, which still holds the cycle's
+    /// factorisation, and the cycle's problem (e.g. the in-cycle momentum compensation of
+    /// `crate::momentum::in_cycle`). An error for a workspace without limits.
+    pub fn correct<F>(
+        &mut self,
+        task: &impl TaskMap,
+        input: &CycleInput<'_>,
+        correct: F,
+    ) -> Result<(), IkError>
+    where
+        F: FnOnce(&mut SaturatedRmrc, &RmrcProblem<'_>, &mut DVector<f64>) -> Result<(), IkError>,
+    {
+        let sns = self.limited.as_mut().ok_or(IkError::InvalidParameter {
+            name: "correct",
+            reason: "needs a workspace with joint limits (ClosedLoopIk::with_limits)",
+        })?;
+        let p = RmrcProblem {
+            jacobian: &self.tasks.jac,
+            rows: self.tasks.rows,
+            xdot: &self.xcmd,
+            weight: input.weight,
+            null_space: input.null_space,
+            damping: input.damping,
+            softness: task.softness(),
+        };
+        correct(sns, &p, &mut self.qdot)
+    }
+
+    /// Explicit Euler `q <- q (+) qd dt` (4.16) with the cycle's velocities.
+    pub fn integrate(
+        &mut self,
+        task: &impl TaskMap,
+        q: &mut DVector<f64>,
+        dt: f64,
+    ) -> Result<(), IkError> {
+        task.retract(q, &self.qdot, dt, &mut self.q_next)?;
         q.copy_from(&self.q_next);
         Ok(())
     }

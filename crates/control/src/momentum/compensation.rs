@@ -6,21 +6,19 @@
 //! that moves mass fore-aft and so carries most of the vertical momentum) is the default;
 //! [`LOLA_ARMS`] adds the shoulder adduction. Any 1-DoF joints can be chosen by name.
 //!
-//! Sign convention (resolved): (7.4) defines `L_r` as the momentum *removed*, so with the
-//! physical Jacobian `J_{L,r,z}` the thesis's `qdot_r` of (7.7) is the negative of the arm
-//! velocity that achieves `J_Lz qdot = L_d`. It enters `y` of (7.3), and RMRC applies
-//! `-N W^-1 y`, so the two signs cancel: with `W = E` and arms free of tasks (`N_rr = E`) the
-//! arms move by `-qdot_r` and the total is `J_{L,p,z} qdot_p - J_{L,r,z} qdot_r = L_d` (7.5).
-//! [`Compensation::add_to`] therefore returns `y` in the same convention as a cost gradient
-//! `(dH/dq)^T`, i.e. exactly what (7.8) adds.
-//!
-//! `qdot_p` is the caller's estimate of the producing velocities: in a 1 kHz loop, the
-//! previous cycle's solution (Alg. 4.3 needs `y` before it solves for `qdot`). Only its
-//! producing entries are read.
+//! The reducing joints move along `J_{L,r,z}^T`, the direction of both (7.7) and (7.9); only
+//! the scale differs. The thesis estimates it from the previous cycle's producing velocities
+//! and feeds `qdot_r` into `y` of (7.3), which at 1 kHz with gain 1 oscillates. Here the
+//! scale is measured within the cycle instead ([`super::in_cycle`]): RMRC is linear in the
+//! null-space input, so after the cycle's solve the response `qd_r` to `y_r = J_{L,r,z}^T`
+//! (zero task velocity, same factorisation) gives `qd += f qd_r` with
+//! `f = k (L_d - J_Lz qd) / (J_Lz qd_r)` (7.5), which sets `L_z` to `k L_d + (1 - k) L_z`
+//! exactly, the tasks' reaction to the arm motion included. With the arms free of tasks and
+//! `W = E`, `qd_r = -J_{L,r,z}^T` on the reducing joints and the term is the minimum-norm
+//! solution (7.7), `f qd_r = k J_{L,r,z}^# (L_d - L_z)`.
 
-use super::error::{check_finite, check_len, MomentumError};
+use super::error::MomentumError;
 use biped_dynamics::Model;
-use nalgebra::DVector;
 
 /// Lola's shoulder and elbow flexion joints (default reducing set).
 pub const LOLA_ARM_FLEXION: [&str; 4] = ["l_shoulder", "l_forearm", "r_shoulder", "r_forearm"];
@@ -35,45 +33,17 @@ pub const LOLA_ARMS: [&str; 6] = [
     "r_forearm",
 ];
 
-/// `|J_{L,r,z}|^2` below which the exact law (7.7) is reported singular.
-const SINGULAR_NORM2: f64 = 1e-20;
-
-/// Which solution of (7.6) is fed to the null space.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CompensationLaw {
-    /// `qdot_r = J_{L,r,z}^# (J_{L,p,z} qdot_p - L_d)`, the minimum-norm solution (7.7).
-    Exact,
-    /// `qdot_r = |J_{L,r,z}| J_{L,r,z}^# (...)`, the bounded normalised law (7.9).
-    Normalised,
-}
-
-/// Split of the DoFs into producing and reducing sets and the compensation law (7.7)/(7.9).
+/// Split of the DoFs into producing and reducing sets and the gain `k` of the compensation.
 #[derive(Clone, Debug)]
 pub struct Compensation {
     reducing: Vec<usize>,
     is_reducing: Vec<bool>,
-    law: CompensationLaw,
     gain: f64,
 }
 
-/// Result of one compensation evaluation.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CompensationTerms {
-    /// Producing momentum `L_{p,z} = J_{L,p,z} qdot_p` (7.5).
-    pub producing: f64,
-    /// `|J_{L,r,z}|`.
-    pub reducing_norm: f64,
-    /// Scalar `s` with `qdot_r = s J_{L,r,z}^T` (before the gain).
-    pub scale: f64,
-}
-
 impl Compensation {
-    /// Reducing set from 1-DoF joint names of `model`, with `law` and gain 1.
-    pub fn new(
-        model: &Model,
-        joints: &[&str],
-        law: CompensationLaw,
-    ) -> Result<Self, MomentumError> {
+    /// Reducing set from 1-DoF joint names of `model`, with gain 1.
+    pub fn new(model: &Model, joints: &[&str]) -> Result<Self, MomentumError> {
         let mut is_reducing = vec![false; model.nv()];
         let mut reducing = Vec::with_capacity(joints.len());
         for name in joints {
@@ -100,17 +70,16 @@ impl Compensation {
         Ok(Self {
             reducing,
             is_reducing,
-            law,
             gain: 1.0,
         })
     }
 
-    /// Lola's default: [`LOLA_ARM_FLEXION`] with the normalised law (7.9).
+    /// Lola's default: [`LOLA_ARM_FLEXION`].
     pub fn lola(model: &Model) -> Result<Self, MomentumError> {
-        Self::new(model, &LOLA_ARM_FLEXION, CompensationLaw::Normalised)
+        Self::new(model, &LOLA_ARM_FLEXION)
     }
 
-    /// Sets the gain `k` multiplying `qdot_r` in `y` (finite, >= 0).
+    /// Sets the gain `k` of the compensation: the share of `L_d - L_z` removed per cycle (finite, >= 0).
     pub fn with_gain(mut self, gain: f64) -> Result<Self, MomentumError> {
         if !(gain.is_finite() && gain >= 0.0) {
             return Err(MomentumError::InvalidParameter {
@@ -133,63 +102,13 @@ impl Compensation {
         self.is_reducing.get(i).copied().unwrap_or(false)
     }
 
-    /// The law in use.
-    pub fn law(&self) -> CompensationLaw {
-        self.law
+    /// Number of velocity coordinates of the model the set was built on.
+    pub fn nv(&self) -> usize {
+        self.is_reducing.len()
     }
 
-    /// Evaluates (7.5) and the scale of (7.7)/(7.9) for `J_Lz^T` (`jlz`), the producing velocity
-    /// estimate `qdot` and the desired `L_d`.
-    pub fn terms(
-        &self,
-        jlz: &DVector<f64>,
-        qdot: &DVector<f64>,
-        l_desired: f64,
-    ) -> Result<CompensationTerms, MomentumError> {
-        let n = self.is_reducing.len();
-        check_len("jlz", jlz.len(), n)?;
-        check_len("qdot", qdot.len(), n)?;
-        check_finite("jlz", jlz.iter())?;
-        check_finite("qdot", qdot.iter())?;
-        check_finite("l_desired", [l_desired].iter())?;
-        let mut producing = 0.0;
-        for ((j, v), r) in jlz.iter().zip(qdot.iter()).zip(&self.is_reducing) {
-            if !r {
-                producing += j * v;
-            }
-        }
-        let norm2: f64 = self.reducing.iter().map(|&i| jlz[i] * jlz[i]).sum();
-        let error = producing - l_desired;
-        let scale = match self.law {
-            CompensationLaw::Exact if norm2 <= SINGULAR_NORM2 => {
-                return Err(MomentumError::Singular { norm: norm2.sqrt() })
-            }
-            CompensationLaw::Exact => error / norm2,
-            CompensationLaw::Normalised if norm2 == 0.0 => 0.0,
-            CompensationLaw::Normalised => error / norm2.sqrt(),
-        };
-        Ok(CompensationTerms {
-            producing,
-            reducing_norm: norm2.sqrt(),
-            scale,
-        })
-    }
-
-    /// Adds `k qdot_r` (7.7)/(7.9) to the reducing entries of the null-space input `y` (7.8);
-    /// other entries are untouched. Returns the evaluated terms.
-    pub fn add_to(
-        &self,
-        jlz: &DVector<f64>,
-        qdot: &DVector<f64>,
-        l_desired: f64,
-        y: &mut DVector<f64>,
-    ) -> Result<CompensationTerms, MomentumError> {
-        check_len("y", y.len(), self.is_reducing.len())?;
-        let terms = self.terms(jlz, qdot, l_desired)?;
-        let s = self.gain * terms.scale;
-        for &i in &self.reducing {
-            y[i] += s * jlz[i];
-        }
-        Ok(terms)
+    /// The gain `k`.
+    pub fn gain(&self) -> f64 {
+        self.gain
     }
 }

@@ -52,14 +52,6 @@ pub enum MomentumError {
     /// The joint-space weight rejected the update.
     #[error(transparent)]
     Weight(#[from] crate::error::IkError),
-    /// Exact compensation (7.7) with a vanishing `J_{L,r,z}`: the constraint has no solution.
-    #[error(
-        "J_Lz of the reducing joints vanishes (|J_r| = {norm:e}); use the normalised law (7.9)"
-    )]
-    Singular {
-        /// `|J_{L,r,z}|`.
-        norm: f64,
-    },
 }
 
 /// `Ok` if `len == expected`.

@@ -14,7 +14,7 @@ use crate::avoidance::{AvoidanceParams, AvoidanceSummary, CollisionAvoidance};
 use crate::ik::joint_cost::JointCost;
 use crate::ik::{RmrcProblem, SaturatedRmrc, SaturationReport, TaskBuffers, TaskMap, Weight};
 use crate::momentum::{
-    vertical_inertia, ArmSwing, ArmSwingNominal, ArmTargets, Compensation, CompensationLaw,
+    vertical_inertia, ArmSwing, ArmSwingNominal, ArmTargets, Compensation, InCycleCompensation,
     MomentumMinimisation, MomentumReference, VerticalMomentum,
 };
 use crate::pattern::{FootGeometry, PatternSample, WalkingPattern};
@@ -93,14 +93,11 @@ pub struct WalkController {
     xcmd: DVector<f64>,
     grad: DVector<f64>,
     grad_c: DVector<f64>,
-    dir: DVector<f64>,
-    zero_x: DVector<f64>,
-    qdot_r: DVector<f64>,
     weight: Weight,
     cost: JointCost,
     avoid: Option<CollisionAvoidance>,
     vm: VerticalMomentum,
-    comp: Compensation,
+    comp: InCycleCompensation,
     minim: MomentumMinimisation,
     reference: MomentumReference,
     swing: ArmSwing,
@@ -180,9 +177,10 @@ impl WalkController {
             Method::None => arm_lock_weight(robot, params.arm_lock_weight)?,
             _ => Weight::Identity,
         };
-        // only the reducing set is used (see `compensate`)
         let reducing: Vec<&str> = robot.reducing.iter().map(String::as_str).collect();
-        let comp = Compensation::new(model, &reducing, CompensationLaw::Exact)?;
+        let comp = Compensation::new(model, &reducing)?.with_gain(params.compensation_gain)?;
+        let comp =
+            InCycleCompensation::new(comp, TaskId::TOTAL_ROWS, params.compensation_max_speed)?;
         let izz = vertical_inertia(model, &mut Data::new(model), &q)?;
         let shoulders = robot.frames.arm_roots;
         let arm_pivot = arm_pivots(&tasks, &shoulders);
@@ -198,9 +196,6 @@ impl WalkController {
             xcmd: DVector::zeros(TaskId::TOTAL_ROWS),
             grad: DVector::zeros(nv),
             grad_c: DVector::zeros(nv),
-            dir: DVector::zeros(nv),
-            zero_x: DVector::zeros(TaskId::TOTAL_ROWS),
-            qdot_r: DVector::zeros(nv),
             weight,
             cost,
             avoid,

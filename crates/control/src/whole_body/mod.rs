@@ -224,7 +224,7 @@ impl Ik {
         }
         let solver = self.solver.as_mut().ok_or(IkError::NotPositiveDefinite)?;
         let model = self.stack.model();
-        let min_distance = self.null_space.evaluate(model, q, &solver.qdot)?;
+        let min_distance = self.null_space.evaluate(model, q)?;
         let input = CycleInput {
             gain: f / dt,
             weight: &self.weight,
@@ -235,7 +235,14 @@ impl Ik {
             damping: self.options.damping,
             dt,
         };
-        solver.step(&mut self.stack, q, &input)?;
+        solver.velocities(&mut self.stack, q, &input)?;
+        if let Some(m) = &mut self.null_space.momentum {
+            let (jlz, target) = (m.vm.jacobian_z(), m.target);
+            solver.correct(&self.stack, &input, |sns, p, qdot| {
+                m.comp.apply(sns, p, jlz, target, qdot)
+            })?;
+        }
+        solver.integrate(&self.stack, q, dt)?;
         Ok(StepReport {
             error_norm: solver.tasks.error_norm(),
             saturation: solver.limits().map(|s| s.report()).unwrap_or_default(),

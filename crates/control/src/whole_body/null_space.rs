@@ -1,12 +1,13 @@
 //! The null-space term of an [`super::Ik`] step (4.12) and the methods that switch its parts
 //! on: a comfort pose, the self-collision avoidance gradient (ch. 5) and the angular momentum
-//! compensation `qdot_r` (7.3.2, (7.8)), evaluated at the configuration of the step.
+//! compensation (7.3.2), evaluated at the configuration of the step; the compensation adds
+//! its term after the step's solve ([`crate::momentum::InCycleCompensation`]).
 
 use super::Ik;
 use crate::avoidance::{AvoidanceParams, CollisionAvoidance, RepulsiveLaw};
 use crate::error::IkError;
 use crate::ik::TaskMap;
-use crate::momentum::{Compensation, CompensationLaw, VerticalMomentum};
+use crate::momentum::{Compensation, InCycleCompensation, VerticalMomentum};
 use biped_dynamics::{Centroidal, Data, Jacobians, Model};
 use biped_ssv::CollisionModel;
 use nalgebra::DVector;
@@ -14,7 +15,7 @@ use nalgebra::DVector;
 /// Vertical angular momentum compensation by the reducing joints.
 #[derive(Debug, Clone)]
 pub(super) struct MomentumTerm {
-    pub comp: Compensation,
+    pub comp: InCycleCompensation,
     pub cen: Centroidal,
     pub vm: VerticalMomentum,
     /// Desired `L_z` \[N m s].
@@ -61,21 +62,16 @@ impl NullSpace {
         }
     }
 
-    /// Whether any term is on.
+    /// Whether any gradient term is on (the compensation adds no gradient).
     pub fn is_on(&self) -> bool {
-        self.avoidance.is_some() || self.momentum.is_some() || self.comfort.is_some()
+        self.avoidance.is_some() || self.comfort.is_some()
     }
 
-    /// `y` at `q` (with the previous step's joint velocities `qdot_prev` for the producing
-    /// momentum); returns the smallest active segment distance, if any.
-    pub fn evaluate(
-        &mut self,
-        model: &Model,
-        q: &DVector<f64>,
-        qdot_prev: &DVector<f64>,
-    ) -> Result<Option<f64>, IkError> {
+    /// `y` at `q` (and `J_Lz` for the compensation); returns the smallest active segment
+    /// distance, if any.
+    pub fn evaluate(&mut self, model: &Model, q: &DVector<f64>) -> Result<Option<f64>, IkError> {
         self.grad.fill(0.0);
-        let min_distance = self.evaluate_dynamic_terms(model, q, qdot_prev)?;
+        let min_distance = self.evaluate_dynamic_terms(model, q)?;
         // after the avoidance term, which scales the gradient by its gain
         if let Some(c) = &self.comfort {
             for &(qi, vi) in &c.joints {
@@ -85,12 +81,11 @@ impl NullSpace {
         Ok(min_distance)
     }
 
-    /// Adds the avoidance and momentum parts of `y` (those that need the Jacobians).
+    /// Adds the avoidance part of `y` and updates `J_Lz` (the parts that need the Jacobians).
     fn evaluate_dynamic_terms(
         &mut self,
         model: &Model,
         q: &DVector<f64>,
-        qdot_prev: &DVector<f64>,
     ) -> Result<Option<f64>, IkError> {
         if self.avoidance.is_none() && self.momentum.is_none() {
             return Ok(None);
@@ -113,9 +108,6 @@ impl NullSpace {
                 .compute_matrix_with(model, &self.data, &self.jac)
                 .map_err(|e| err(what, e))?;
             m.vm.update(&m.cen).map_err(|e| err(what, e))?;
-            (m.comp
-                .add_to(m.vm.jacobian_z(), qdot_prev, m.target, &mut self.grad))
-            .map_err(|e| err(what, e))?;
         }
         Ok(min_distance)
     }
@@ -145,18 +137,16 @@ impl Ik {
         Ok(())
     }
 
-    /// Compensates the vertical angular momentum with the `reducing` joints (7.3.2): each step
-    /// adds their velocities `qdot_r` of (7.7) (`law` Exact) or (7.9) (Normalised) for the
-    /// producing joints' previous velocities to the null-space term (7.8), towards the target
-    /// of [`Self::set_momentum_target`] (default 0).
-    pub fn compensate_momentum(
-        &mut self,
-        reducing: &[&str],
-        law: CompensationLaw,
-    ) -> Result<(), IkError> {
+    /// Compensates the vertical angular momentum with the `reducing` joints (7.3.2): after
+    /// each step's solve their motion along `J_{L,r,z}^T`, with the tasks' reaction, sets
+    /// `L_z` to the target of [`Self::set_momentum_target`] (default 0), the term's joint
+    /// speeds capped at the limits' velocity limit ([`crate::momentum::in_cycle`]).
+    pub fn compensate_momentum(&mut self, reducing: &[&str]) -> Result<(), IkError> {
         let model = self.stack.model();
-        let comp = Compensation::new(model, reducing, law)
+        let comp = Compensation::new(model, reducing)
             .map_err(|e| IkError::Kinematics(format!("momentum compensation: {e}")))?;
+        let speed = self.limits.settings().max_velocity;
+        let comp = InCycleCompensation::new(comp, self.stack.max_rows(), speed)?;
         self.null_space.momentum = Some(MomentumTerm {
             comp,
             cen: Centroidal::new(model),
