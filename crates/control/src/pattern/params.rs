@@ -157,98 +157,98 @@ impl PatternParams {
     /// Rejects non-finite, non-positive or absurd values, then steps beyond the legs' reach
     /// and step times too short for the swing ([`super::reach`]), with typed errors.
     pub fn validate(&self) -> Result<(), PatternError> {
-        let n = self.n_steps as f64;
-        range("n_steps", n, 1.0, 1000.0, "1 to 1000 steps")?;
-        range(
-            "step_length",
-            self.step_length,
-            -1.0,
-            1.0,
-            "|step_length| <= 1 m",
-        )?;
-        range(
-            "step_sideways",
-            self.step_sideways,
-            -0.5,
-            0.5,
-            "|step_sideways| <= 0.5 m",
-        )?;
-        range(
-            "turn_angle",
-            self.turn_angle,
-            -0.6,
-            0.6,
-            "|turn_angle| <= 0.6 rad",
-        )?;
-        range("step_width", self.step_width, 0.0, 1.0, "0 to 1 m")?;
-        range("step_time", self.step_time, 0.2, 10.0, "0.2 to 10 s")?;
-        range("ds_ratio", self.ds_ratio, 0.01, 0.9, "0.01 to 0.9")?;
-        range("step_height", self.step_height, 0.0, 0.5, "0 to 0.5 m")?;
-        range("com_height", self.com_height, 0.1, 3.0, "0.1 to 3 m")?;
-        range("gravity", self.gravity, 0.1, 100.0, "0.1 to 100 m/s^2")?;
-        range("dt", self.dt, 1e-5, 0.05, "1e-5 to 0.05 s")?;
-        range("start_time", self.start_time, 0.0, 60.0, "0 to 60 s")?;
-        range("end_time", self.end_time, 0.0, 60.0, "0 to 60 s")?;
-        range("preview_time", self.preview_time, 0.1, 10.0, "0.1 to 10 s")?;
-        range("zmp_weight", self.zmp_weight, 1e-12, 1e12, "positive")?;
-        range("state_weight", self.state_weight, 0.0, 1e12, "non-negative")?;
-        range("input_weight", self.input_weight, 1e-15, 1e12, "positive")?;
-        range("foot.front", self.foot.front, 0.0, 1.0, "0 to 1 m")?;
-        range("foot.back", self.foot.back, 0.0, 1.0, "0 to 1 m")?;
-        range(
-            "foot.half_width",
-            self.foot.half_width,
-            0.0,
-            0.5,
-            "0 to 0.5 m",
-        )?;
-        range(
-            "foot.toe_height",
-            self.foot.toe_height,
-            0.0,
-            0.2,
-            "0 to 0.2 m",
-        )?;
-        range(
-            "foot.toe_length",
-            self.foot.toe_length,
-            0.0,
-            0.5,
-            "0 to 0.5 m",
-        )?;
+        for (name, value, lo, hi, reason) in self.ranges() {
+            range(name, value, lo, hi, reason)?;
+        }
         self.roll.validate()?;
         range("reach", self.reach, 0.05, 5.0, "0.05 to 5 m")?;
-        range(
-            "max_swing_speed",
-            self.max_swing_speed,
-            0.1,
-            50.0,
-            "0.1 to 50 m/s",
-        )?;
-        let min_phase = 2.0 * self.dt;
-        range(
-            "ds_ratio",
-            self.ds_time(),
-            min_phase,
-            f64::MAX,
-            "double support shorter than 2 dt",
-        )?;
-        range(
-            "ds_ratio",
-            self.ss_time(),
-            min_phase,
-            f64::MAX,
-            "single support shorter than 2 dt",
-        )?;
+        let swing = self.max_swing_speed;
+        range("max_swing_speed", swing, 0.1, 50.0, "0.1 to 50 m/s")?;
+        let (min_phase, big) = (2.0 * self.dt, f64::MAX);
+        let ds = "double support shorter than 2 dt";
+        range("ds_ratio", self.ds_time(), min_phase, big, ds)?;
+        let ss = "single support shorter than 2 dt";
+        range("ds_ratio", self.ss_time(), min_phase, big, ss)?;
         let samples = self.duration() / self.dt;
         range("dt", samples, 1.0, 1e7, "more than 1e7 samples")?;
+        let preview = self.preview_time / self.dt;
         range(
             "preview_time",
-            self.preview_time / self.dt,
+            preview,
             1.0,
             1e5,
             "more than 1e5 preview samples",
         )?;
         super::reach::check(self)
+    }
+
+    /// The plain range checks of [`Self::validate`]: `(name, value, lo, hi, reason)`.
+    fn ranges(&self) -> [(&'static str, f64, f64, f64, &'static str); 22] {
+        [
+            (
+                "n_steps",
+                self.n_steps as f64,
+                1.0,
+                1000.0,
+                "1 to 1000 steps",
+            ),
+            (
+                "step_length",
+                self.step_length,
+                -1.0,
+                1.0,
+                "|step_length| <= 1 m",
+            ),
+            (
+                "step_sideways",
+                self.step_sideways,
+                -0.5,
+                0.5,
+                "|step_sideways| <= 0.5 m",
+            ),
+            (
+                "turn_angle",
+                self.turn_angle,
+                -0.6,
+                0.6,
+                "|turn_angle| <= 0.6 rad",
+            ),
+            ("step_width", self.step_width, 0.0, 1.0, "0 to 1 m"),
+            ("step_time", self.step_time, 0.2, 10.0, "0.2 to 10 s"),
+            ("ds_ratio", self.ds_ratio, 0.01, 0.9, "0.01 to 0.9"),
+            ("step_height", self.step_height, 0.0, 0.5, "0 to 0.5 m"),
+            ("com_height", self.com_height, 0.1, 3.0, "0.1 to 3 m"),
+            ("gravity", self.gravity, 0.1, 100.0, "0.1 to 100 m/s^2"),
+            ("dt", self.dt, 1e-5, 0.05, "1e-5 to 0.05 s"),
+            ("start_time", self.start_time, 0.0, 60.0, "0 to 60 s"),
+            ("end_time", self.end_time, 0.0, 60.0, "0 to 60 s"),
+            ("preview_time", self.preview_time, 0.1, 10.0, "0.1 to 10 s"),
+            ("zmp_weight", self.zmp_weight, 1e-12, 1e12, "positive"),
+            ("state_weight", self.state_weight, 0.0, 1e12, "non-negative"),
+            ("input_weight", self.input_weight, 1e-15, 1e12, "positive"),
+            ("foot.front", self.foot.front, 0.0, 1.0, "0 to 1 m"),
+            ("foot.back", self.foot.back, 0.0, 1.0, "0 to 1 m"),
+            (
+                "foot.half_width",
+                self.foot.half_width,
+                0.0,
+                0.5,
+                "0 to 0.5 m",
+            ),
+            (
+                "foot.toe_height",
+                self.foot.toe_height,
+                0.0,
+                0.2,
+                "0 to 0.2 m",
+            ),
+            (
+                "foot.toe_length",
+                self.foot.toe_length,
+                0.0,
+                0.5,
+                "0 to 0.5 m",
+            ),
+        ]
     }
 }

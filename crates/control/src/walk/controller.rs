@@ -7,24 +7,23 @@
 
 use super::error::WalkError;
 use super::method::{Method, WalkParams};
-use super::posture::{arm_lock_weight, arm_pivots, place_on_footprints, swing_on_circle, ArmPivot};
+use super::posture::{swing_on_circle, ArmPivot};
 use super::robot::WalkRobot;
 use super::targets::{legs, set_targets};
-use crate::avoidance::{AvoidanceParams, AvoidanceSummary, CollisionAvoidance};
+use crate::avoidance::{AvoidanceSummary, CollisionAvoidance};
 use crate::ik::joint_cost::JointCost;
 use crate::ik::{RmrcProblem, SaturatedRmrc, SaturationReport, TaskBuffers, TaskMap, Weight};
 use crate::momentum::{
-    vertical_inertia, ArmSwing, ArmSwingNominal, ArmTargets, Compensation, InCycleCompensation,
-    MomentumMinimisation, MomentumReference, VerticalMomentum,
+    ArmSwing, ArmTargets, InCycleCompensation, MomentumMinimisation, MomentumReference,
+    VerticalMomentum,
 };
 use crate::pattern::{FootGeometry, PatternSample, WalkingPattern};
-use crate::tasks::{LolaTasks, TaskId};
-use biped_dynamics::Data;
+use crate::tasks::LolaTasks;
 use biped_robots::lola::LolaModel;
-use joints::{joint_cost, joint_limits};
 use nalgebra::{DVector, Vector3};
 
 mod access;
+mod build;
 mod compensate;
 mod joints;
 
@@ -122,103 +121,6 @@ impl WalkController {
         pattern: &WalkingPattern,
     ) -> Result<Self, WalkError> {
         Self::for_robot(&WalkRobot::lola(lola)?, method, params, pattern)
-    }
-
-    /// Controller for `robot` standing on the first footprints of `pattern`, after
-    /// `params.settle_time` of IK cycles on its first sample.
-    pub fn for_robot(
-        robot: &WalkRobot,
-        method: Method,
-        params: WalkParams,
-        pattern: &WalkingPattern,
-    ) -> Result<Self, WalkError> {
-        let dt = pattern.params().dt;
-        params.validate(dt)?;
-        let first = pattern.sample(0).ok_or(WalkError::InvalidParameter {
-            name: "pattern",
-            reason: "has no samples".into(),
-        })?;
-        let model = &robot.model;
-        let nv = model.nv();
-        let mut tasks = LolaTasks::with_frames(model, &robot.frames, 0.2)?;
-        let q = place_on_footprints(robot, &mut tasks, first, params.arm_pose)?;
-        tasks.set_targets_from(&q)?;
-        let com_offset = tasks.targets.cog - first.com;
-        let arm_on = method.arm_tasks();
-        tasks.set_active_now(TaskId::RightArmCoG, arm_on);
-        tasks.set_active_now(TaskId::LeftArmCoG, arm_on);
-        let [right_leg, left_leg] = legs(first, &com_offset).map(|l| l.position);
-        let nominal = ArmSwingNominal {
-            left_arm: tasks.targets.arm_cog[1],
-            right_arm: tasks.targets.arm_cog[0],
-            left_leg,
-            right_leg,
-        };
-        let swing = ArmSwing::with_mask(params.arm_swing_scale, Vector3::x(), nominal)?;
-        let cost = joint_cost(
-            robot,
-            &q,
-            params.comfort_weight,
-            params.limit_weight,
-            params.limit_margin,
-        )?;
-        let avoid = if params.avoidance {
-            Some(CollisionAvoidance::new(
-                model,
-                robot.collision.clone(),
-                AvoidanceParams::default(),
-            )?)
-        } else {
-            None
-        };
-        let minim = MomentumMinimisation::new(params.minimization_delta)?;
-        let weight = match method {
-            Method::Minimization => minim.weight(nv)?,
-            Method::None => arm_lock_weight(robot, params.arm_lock_weight)?,
-            _ => Weight::Identity,
-        };
-        let reducing: Vec<&str> = robot.reducing.iter().map(String::as_str).collect();
-        let comp = Compensation::new(model, &reducing)?.with_gain(params.compensation_gain)?;
-        let comp =
-            InCycleCompensation::new(comp, TaskId::TOTAL_ROWS, params.compensation_max_speed)?;
-        let izz = vertical_inertia(model, &mut Data::new(model), &q)?;
-        let shoulders = robot.frames.arm_roots;
-        let arm_pivot = arm_pivots(&tasks, &shoulders);
-        let mut ctrl = Self {
-            arm_pivot,
-            shoulders,
-            method,
-            params,
-            buf: TaskBuffers::new(&tasks),
-            sns: SaturatedRmrc::new(TaskId::TOTAL_ROWS, nv, joint_limits(robot, &params)?)?,
-            foot: pattern.params().foot,
-            toes: robot.frames.toes.is_some(),
-            xcmd: DVector::zeros(TaskId::TOTAL_ROWS),
-            grad: DVector::zeros(nv),
-            grad_c: DVector::zeros(nv),
-            weight,
-            cost,
-            avoid,
-            vm: VerticalMomentum::new(model),
-            comp,
-            minim,
-            reference: MomentumReference::new(izz)?,
-            swing,
-            com_offset,
-            step: first.step,
-            step_turn: (pattern.params().step_time, pattern.params().turn_angle),
-            q_eval: q.clone(),
-            q_next: q.clone(),
-            qdot: DVector::zeros(nv),
-            q,
-            tasks,
-        };
-        let settle = (params.settle_time / dt).round() as usize;
-        for _ in 0..settle {
-            ctrl.cycle(first, dt)?;
-        }
-        ctrl.qdot.fill(0.0);
-        Ok(ctrl)
     }
 
     /// One IK cycle over pattern sample `s` with period `dt`: q moves to the next cycle.

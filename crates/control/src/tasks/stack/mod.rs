@@ -125,7 +125,6 @@ impl TaskStack {
         err: &mut DVector<f64>,
         out: &mut DMatrix<f64>,
     ) -> Result<(), IkError> {
-        let id = Matrix3::identity();
         let kind = &self.tasks[k].kind;
         match kind {
             TaskKind::Position { frame, target } => {
@@ -168,30 +167,18 @@ impl TaskStack {
                 self.write_offset((&points.0, &points.1), &axes, &target, r, err, out)?;
             }
             TaskKind::Com { target } => {
-                put_rows(out, r, &id, &self.jc, 0, None, 0);
+                put_rows(out, r, &Matrix3::identity(), &self.jc, 0, None, 0);
                 err.fixed_rows_mut::<3>(r)
                     .copy_from(&(target - self.cen.com()));
             }
             TaskKind::Posture { joints, target } => {
-                // the row block zeroed by contiguous column segments, then the unit entries
-                let (nr, k) = (out.nrows(), joints.len());
-                for col in out.as_mut_slice().chunks_exact_mut(nr) {
-                    col[r..r + k].fill(0.0);
-                }
-                for (i, &(qi, vi)) in joints.iter().enumerate() {
-                    out[(r + i, vi)] = 1.0;
-                    err[r + i] = target[qi] - q[qi];
-                }
+                unit::write_posture(joints, target, q, r, err, out);
             }
             TaskKind::Joint {
                 q_index,
                 v_index,
                 target,
-            } => {
-                out.row_mut(r).fill(0.0);
-                out[(r, *v_index)] = 1.0;
-                err[r] = target - q[*q_index];
-            }
+            } => unit::write_joint((*q_index, *v_index), *target, q, r, err, out),
             TaskKind::AngularMomentum { axes, .. } => {
                 let rows = match axes {
                     MomentumAxes::Vertical => 2..3,

@@ -154,37 +154,10 @@ impl DynamicWalkSummary {
         (fell_at, diverged): (Option<f64>, bool),
         margins: SimulatedMargins,
     ) -> Self {
-        let first_last = |v: &[f64]| match (v.first(), v.last()) {
-            (Some(a), Some(b)) => b - a,
-            _ => 0.0,
-        };
-        let xs: Vec<f64> = s.base.iter().map(|b| b[0]).collect();
-        let planned: Vec<f64> = r.base.iter().map(|b| b.x).collect();
-        let (distance, planned_distance) = (first_last(&xs), first_last(&planned));
-        let progress = if planned_distance.abs() > 1e-9 {
-            distance / planned_distance
-        } else {
-            1.0
-        };
+        let (distance, planned_distance, progress) = progress(s, r);
         let max = |v: &mut dyn Iterator<Item = f64>| v.fold(0.0_f64, f64::max);
         let sim_time = s.t.last().copied().unwrap_or(0.0);
-        let peak_tau = s
-            .tau_z
-            .iter()
-            .flatten()
-            .zip(s.foot_fz.iter().flatten())
-            .filter(|(_, fz)| **fz > 1.0)
-            .map(|(t, _)| t.abs());
-        let mut slip = SlipTracker::default();
-        let samples = s.slip_speed.iter().zip(&s.points_in_contact);
-        for (&t, (v, n)) in s.t.iter().zip(samples) {
-            let side = |i: usize| SideSample {
-                slip_speed: v[i],
-                points: n[i],
-                ..SideSample::default()
-            };
-            slip.add(t, r.dt, &[side(0), side(1)]);
-        }
+        let slip = slip_of(s, r);
         let flight = Flight::of(&s.t, r.dt, &s.points_in_contact, &s.foot_fz);
         Self {
             walked: fell_at.is_none() && progress >= p.min_progress,
@@ -195,7 +168,7 @@ impl DynamicWalkSummary {
             max_tilt: max(&mut s.tilt.iter().copied()),
             min_base_height: s.base.iter().map(|b| b[2]).fold(f64::INFINITY, f64::min),
             max_tracking_error: max(&mut s.tracking_error.iter().copied()),
-            peak_abs_tau_z: max(&mut peak_tau.into_iter()),
+            peak_abs_tau_z: peak_tau(s),
             sim_time,
             wall_time,
             realtime_factor: if wall_time > 0.0 {
@@ -228,4 +201,45 @@ impl DynamicWalkSummary {
             min_distance_at: margins.pair,
         }
     }
+}
+
+/// Distance walked, distance planned (base x, first to last sample) and their ratio.
+fn progress(s: &DynamicWalkSeries, r: &JointReference) -> (f64, f64, f64) {
+    let first_last = |v: &mut dyn Iterator<Item = f64>| {
+        let first = v.next();
+        match (first, v.last().or(first)) {
+            (Some(a), Some(b)) => b - a,
+            _ => 0.0,
+        }
+    };
+    let distance = first_last(&mut s.base.iter().map(|b| b[0]));
+    let planned = first_last(&mut r.base.iter().map(|b| b.x));
+    let progress = match planned.abs() > 1e-9 {
+        true => distance / planned,
+        false => 1.0,
+    };
+    (distance, planned, progress)
+}
+
+/// Largest `|tau_z|` of a loaded foot (vertical force over 1 N).
+fn peak_tau(s: &DynamicWalkSeries) -> f64 {
+    let loaded = s.tau_z.iter().flatten().zip(s.foot_fz.iter().flatten());
+    (loaded.filter(|(_, fz)| **fz > 1.0))
+        .map(|(t, _)| t.abs())
+        .fold(0.0_f64, f64::max)
+}
+
+/// The slip verdict over the series' sliding speeds and contact points.
+fn slip_of(s: &DynamicWalkSeries, r: &JointReference) -> SlipTracker {
+    let mut slip = SlipTracker::default();
+    let samples = s.slip_speed.iter().zip(&s.points_in_contact);
+    for (&t, (v, n)) in s.t.iter().zip(samples) {
+        let side = |i: usize| SideSample {
+            slip_speed: v[i],
+            points: n[i],
+            ..SideSample::default()
+        };
+        slip.add(t, r.dt, &[side(0), side(1)]);
+    }
+    slip
 }

@@ -34,12 +34,7 @@ impl WalkRobot {
         let urdf = &robot.urdf;
         let model = urdf.model.clone();
         let joints = ranged_joints(robot);
-        let collision = robot.collision.as_ref().ok_or_else(|| {
-            WalkError::Description(format!(
-                "{file}: no [collision] model: the walk's self-collision avoidance needs one \
-                 (`biped ssv fit` makes one)"
-            ))
-        })?;
+        let collision = collision_model(robot)?;
         // description order is [left, right]; the walk's slots are [right, left]
         let soles = [
             sole_frame(urdf, &d.feet[1], file)?,
@@ -49,26 +44,9 @@ impl WalkRobot {
             first_body(robot, &d.arms[1])?,
             first_body(robot, &d.arms[0])?,
         ];
-        let torso = urdf
-            .model
-            .body(arm_roots[1])
-            .and_then(|b| b.parent())
-            .ok_or_else(|| {
-                WalkError::Description(format!("{file}: the left arm has no parent body"))
-            })?;
+        let torso = torso(robot, arm_roots[1])?;
         let (held, hands) = held_joints(robot, &arm_roots);
-        if held.len() > HELD_SLOTS.len() {
-            return Err(WalkError::Description(format!(
-                "{file}: {} joints outside the legs and arms ({}): the walk holds at most {}",
-                held.len(),
-                held.join(", "),
-                HELD_SLOTS.len()
-            )));
-        }
-        let mut slots = [None; 7];
-        for (name, &slot) in held.iter().zip(HELD_SLOTS.iter()) {
-            slots[slot] = robot.joint_index(name);
-        }
+        let slots = held_slots(robot, &held)?;
         let mut arm_joints: Vec<String> = d.arms.iter().flatten().cloned().collect();
         arm_joints.extend(hands);
         let mut recorded = arm_joints.clone();
@@ -93,7 +71,7 @@ impl WalkRobot {
             arm_pose_joints: Vec::new(),
             reducing: d.reducing.clone(),
             recorded,
-            collision: collision.model.clone(),
+            collision,
             posture: robot.comfort.clone(),
             foot,
             roll: FootRoll::flat(),
@@ -105,6 +83,44 @@ impl WalkRobot {
             model,
         })
     }
+}
+
+/// The description's collision model, which the walk's self-collision avoidance needs.
+fn collision_model(robot: &Robot) -> Result<biped_ssv::CollisionModel, WalkError> {
+    let file = &robot.description.file;
+    let c = robot.collision.as_ref().ok_or_else(|| {
+        WalkError::Description(format!(
+            "{file}: no [collision] model: the walk's self-collision avoidance needs one \
+             (`biped ssv fit` makes one)"
+        ))
+    })?;
+    Ok(c.model.clone())
+}
+
+/// The body that carries the left arm (the upper-body task's frame).
+fn torso(robot: &Robot, left_arm_root: usize) -> Result<usize, WalkError> {
+    let file = &robot.description.file;
+    (robot.urdf.model.body(left_arm_root))
+        .and_then(|b| b.parent())
+        .ok_or_else(|| WalkError::Description(format!("{file}: the left arm has no parent body")))
+}
+
+/// The walk's single-joint task slots of the joints outside the legs and arms.
+fn held_slots(robot: &Robot, held: &[String]) -> Result<[Option<(usize, usize)>; 7], WalkError> {
+    if held.len() > HELD_SLOTS.len() {
+        return Err(WalkError::Description(format!(
+            "{}: {} joints outside the legs and arms ({}): the walk holds at most {}",
+            robot.description.file,
+            held.len(),
+            held.join(", "),
+            HELD_SLOTS.len()
+        )));
+    }
+    let mut slots = [None; 7];
+    for (name, &slot) in held.iter().zip(HELD_SLOTS.iter()) {
+        slots[slot] = robot.joint_index(name);
+    }
+    Ok(slots)
 }
 
 /// The URDF's movable joints with a finite range.
